@@ -1,0 +1,44 @@
+#include "comparisons/io/plane_cases.h"
+
+#include "comparisons/io/plane_json.h"
+#include "comparisons/io/scene_json.h"
+
+namespace tecido::io {
+
+std::vector<PlaneCase> plane_cases_from_json(const Json& doc, const std::string& file) {
+  JsonReader r(file);
+  const Json& cases = r.require_array(r.require(doc, "", "cases"), "/cases");
+  std::vector<PlaneCase> out;
+  out.reserve(cases.size());
+  for (std::size_t k = 0; k < cases.size(); ++k) {
+    const std::string w = child("/cases", k);
+    const Json& c = r.require_object(cases[k], w);
+    PlaneCase pc;
+    pc.id = c.contains("id") ? (c["id"].is_string() ? c["id"].get<std::string>() : c["id"].dump()) : std::to_string(k);
+    pc.plane = read_bounded_plane(r, r.require(c, w, "plane"), child(w, "plane"), /*strict=*/false);
+    pc.from = r.vec3(r.require(c, w, "from"), child(w, "from"), kMaxCoordinate);
+    pc.to = r.vec3(r.require(c, w, "to"), child(w, "to"), kMaxCoordinate);
+    out.push_back(std::move(pc));
+  }
+  return out;
+}
+
+std::vector<PlaneCase> load_plane_cases(const std::string& path) { return plane_cases_from_json(read_json_file(path), path); }
+
+Json plane_cases_to_json(const std::vector<PlaneCase>& cases) {
+  Json arr = Json::array();
+  auto v3 = [](const Vec3& v) { return Json::array({v.x(), v.y(), v.z()}); };
+  for (const auto& c : cases) {
+    arr.push_back({{"id", c.id},
+                   {"plane",
+                    {{"position", v3(c.plane.position)},
+                     {"normal", v3(c.plane.normal)},
+                     {"forward", v3(c.plane.forward)},
+                     {"half_extents", Json::array({c.plane.half_extents.x(), c.plane.half_extents.y()})}}},
+                   {"from", v3(c.from)},
+                   {"to", v3(c.to)}});
+  }
+  return Json{{"cases", arr}};
+}
+
+}  // namespace tecido::io

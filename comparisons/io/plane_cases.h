@@ -1,0 +1,24 @@
+#pragma once
+/// The cases file of `tecido plane` (DESIGN.md section 3):
+/// {"cases":[{"id":"..","plane":{...},"from":[..],"to":[..]}, ...]}. Unknown keys are ignored.
+#include "comparisons/io/json_reader.h"
+#include "core/geometry/bounded_plane.h"
+
+#include <string>
+#include <vector>
+
+namespace tecido::io {
+
+struct PlaneCase {
+  std::string id;
+  BoundedPlane plane;
+  Vec3 from, to;
+};
+
+/// Reads and validates a cases file; throws InputError.
+std::vector<PlaneCase> load_plane_cases(const std::string& path);
+std::vector<PlaneCase> plane_cases_from_json(const Json& doc, const std::string& file);
+/// The inverse, for files the suites write (ids kept; numbers printed to round-trip).
+Json plane_cases_to_json(const std::vector<PlaneCase>& cases);
+
+}  // namespace tecido::io

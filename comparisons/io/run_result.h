@@ -1,0 +1,13 @@
+#pragma once
+/// The JSON result of a run (DESIGN.md section 3, `tecido run --json`):
+/// {"status":"ok"|"unstable","unstable_at_step":N|null,"time":T,"steps":N,
+///  "particles":[{"x":[..],"v":[..]}],"integrator","dt","instability":{...}|null,"contacts":{...}}
+/// Numbers are printed with 17 significant digits, so the file round-trips bit for bit.
+#include "comparisons/io/json_reader.h"
+#include "core/dynamics/simulation.h"
+
+namespace tecido::io {
+
+Json run_result_json(const Simulation& sim);
+
+}  // namespace tecido::io

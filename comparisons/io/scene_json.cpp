@@ -1,0 +1,175 @@
+#include "comparisons/io/scene_json.h"
+
+#include "comparisons/io/plane_json.h"
+#include "core/cloth/cloth_builder.h"
+
+#include <cmath>
+#include <random>
+
+namespace tecido::io {
+
+namespace {
+
+Wind read_wind(const JsonReader& r, const Json& j, const std::string& w, std::uint64_t seed) {
+  Wind wind;
+  if (j.is_array()) {
+    wind.force = r.vec3(j, w, 1e9);
+    return wind;
+  }
+  r.require_object(j, w);
+  r.only_keys(j, w, {"force", "swirl"});
+  wind.force = r.vec3(r.require(j, w, "force"), child(w, "force"), 1e9);
+  if (j.contains("swirl")) {
+    const std::string ws = child(w, "swirl");
+    const Json& s = r.require_object(j["swirl"], ws);
+    r.only_keys(s, ws, {"rate", "axis", "phase"});
+    wind.swirl = true;
+    wind.rate = r.number(r.require(s, ws, "rate"), child(ws, "rate"), 1e6);
+    if (s.contains("axis")) {
+      wind.axis = r.vec3(s["axis"], child(ws, "axis"));
+      if (!(wind.axis.norm() > 1e-12)) r.fail(child(ws, "axis"), "axis must not be zero");
+      wind.axis.normalize();
+    }
+    if (s.contains("phase")) {
+      wind.phase = r.number(s["phase"], child(ws, "phase"), 1e6);
+    } else {
+      std::mt19937_64 rng(seed);
+      wind.phase = static_cast<double>(rng() >> 11) * 0x1.0p-53 * 2.0 * M_PI;
+    }
+  }
+  return wind;
+}
+
+ClothGridSpec read_cloth(const JsonReader& r, const Json& j, const std::string& w) {
+  r.require_object(j, w);
+  r.only_keys(j, w, {"rows", "cols", "spacing", "origin", "axis_u", "axis_v", "total_mass", "stiffness_b",
+                     "stiffness_a", "damping", "elasticity", "pins"});
+  ClothGridSpec c;
+  c.rows = static_cast<int>(r.integer(r.require(j, w, "rows"), child(w, "rows"), 2, 4096));
+  c.cols = static_cast<int>(r.integer(r.require(j, w, "cols"), child(w, "cols"), 2, 4096));
+  c.spacing = r.number(r.require(j, w, "spacing"), child(w, "spacing"), 1e6);
+  if (!(c.spacing > 0.0)) r.fail(child(w, "spacing"), "spacing must be > 0");
+  c.origin = r.vec3(r.require(j, w, "origin"), child(w, "origin"), kMaxCoordinate);
+  c.axis_u = r.vec3(r.require(j, w, "axis_u"), child(w, "axis_u"));
+  c.axis_v = r.vec3(r.require(j, w, "axis_v"), child(w, "axis_v"));
+  if (!(c.axis_u.norm() > 1e-12)) r.fail(child(w, "axis_u"), "axis must not be zero");
+  if (!(c.axis_v.norm() > 1e-12)) r.fail(child(w, "axis_v"), "axis must not be zero");
+  c.axis_u.normalize();
+  c.axis_v.normalize();
+  if (std::abs(c.axis_u.dot(c.axis_v)) > 1e-9) r.fail(child(w, "axis_v"), "axis_v must be orthogonal to axis_u");
+  c.total_mass = r.number(r.require(j, w, "total_mass"), child(w, "total_mass"), kMaxMass);
+  if (!(c.total_mass > 0.0)) r.fail(child(w, "total_mass"), "total mass must be > 0");
+  c.stiffness_b = r.number_in(r.require(j, w, "stiffness_b"), child(w, "stiffness_b"), 0.0, 1e12);
+  if (j.contains("stiffness_a")) c.stiffness_a = r.number_in(j["stiffness_a"], child(w, "stiffness_a"), 0.0, 1e12);
+  if (j.contains("damping")) c.damping = r.number_in(j["damping"], child(w, "damping"), 0.0, 1e12);
+  if (j.contains("elasticity")) c.elasticity = r.number_in(j["elasticity"], child(w, "elasticity"), 0.0, 1.0);
+  if (j.contains("pins")) {
+    const std::string wp = child(w, "pins");
+    const Json& pins = r.require_array(j["pins"], wp);
+    for (std::size_t k = 0; k < pins.size(); ++k) {
+      const std::string wk = child(wp, k);
+      if (!pins[k].is_array() || pins[k].size() != 2) r.fail(wk, "expected [row, col]");
+      const int pr = static_cast<int>(r.integer(pins[k][0], child(wk, 0), 0, c.rows - 1));
+      const int pc = static_cast<int>(r.integer(pins[k][1], child(wk, 1), 0, c.cols - 1));
+      c.pins.push_back({pr, pc});
+    }
+  }
+  return c;
+}
+
+}  // namespace
+
+Scene scene_from_json(const Json& doc, const std::string& file) {
+  JsonReader r(file);
+  const std::string root;
+  r.require_object(doc, root);
+  r.only_keys(doc, root, {"integrator", "dt", "steps", "seed", "gravity", "air_drag", "wind", "particles", "springs",
+                          "planes", "contact", "cloth"});
+  Scene s;
+  if (doc.contains("integrator")) {
+    const std::string name = r.string(doc["integrator"], "/integrator");
+    auto k = parse_integrator(name);
+    if (!k) r.fail("/integrator", "unknown integrator \"" + name + "\" (euler, symplectic, midpoint, rk4)");
+    s.integrator = *k;
+  }
+  s.dt = r.number(r.require(doc, root, "dt"), "/dt", kMaxDt);
+  if (!(s.dt > 0.0)) r.fail("/dt", "dt must be > 0");
+  s.steps = r.integer(r.require(doc, root, "steps"), "/steps", 0, kMaxSteps);
+  if (doc.contains("seed")) s.seed = static_cast<std::uint64_t>(r.integer(doc["seed"], "/seed", 0, INT64_MAX));
+  if (doc.contains("gravity")) s.forces.gravity = r.vec3(doc["gravity"], "/gravity", 1e6);
+  if (doc.contains("air_drag")) s.forces.air_drag = r.number_in(doc["air_drag"], "/air_drag", 0.0, 1e12);
+  if (doc.contains("wind")) s.forces.wind = read_wind(r, doc["wind"], "/wind", s.seed);
+
+  const bool has_planes = doc.contains("planes");
+  if (has_planes) {
+    const Json& planes = r.require_array(doc["planes"], "/planes");
+    for (std::size_t k = 0; k < planes.size(); ++k) s.planes.push_back(read_bounded_plane(r, planes[k], child("/planes", k), /*strict=*/true));
+  }
+  if (doc.contains("contact")) {
+    const Json& c = r.require_object(doc["contact"], "/contact");
+    r.only_keys(c, "/contact", {"static_threshold", "tangential_threshold", "bisection_tolerance", "max_events_per_step"});
+    if (c.contains("static_threshold"))
+      s.contact.static_threshold = r.number_in(c["static_threshold"], "/contact/static_threshold", 0.0, 1e6);
+    if (c.contains("tangential_threshold"))
+      s.contact.tangential_threshold = r.number_in(c["tangential_threshold"], "/contact/tangential_threshold", 0.0, 1e6);
+    if (c.contains("bisection_tolerance")) {
+      s.contact.bisection_tolerance = r.number(c["bisection_tolerance"], "/contact/bisection_tolerance", kMaxDt);
+      if (!(s.contact.bisection_tolerance > 0.0)) r.fail("/contact/bisection_tolerance", "must be > 0");
+    }
+    if (c.contains("max_events_per_step"))
+      s.contact.max_events_per_step =
+          static_cast<int>(r.integer(c["max_events_per_step"], "/contact/max_events_per_step", 1, 1000000));
+  }
+
+  if (doc.contains("particles")) {
+    const Json& ps = r.require_array(doc["particles"], "/particles");
+    for (std::size_t k = 0; k < ps.size(); ++k) {
+      const std::string w = child("/particles", k);
+      const Json& p = r.require_object(ps[k], w);
+      r.only_keys(p, w, {"position", "velocity", "mass", "pinned", "elasticity"});
+      const Vec3 x = r.vec3(r.require(p, w, "position"), child(w, "position"), kMaxCoordinate);
+      Vec3 v = Vec3::Zero();
+      if (p.contains("velocity")) v = r.vec3(p["velocity"], child(w, "velocity"), kMaxSpeed);
+      const bool pinned = p.contains("pinned") && r.boolean(p["pinned"], child(w, "pinned"));
+      double mass = 0.0;
+      if (!pinned || p.contains("mass")) {
+        mass = r.number(r.require(p, w, "mass"), child(w, "mass"), kMaxMass);
+        if (!(mass > 0.0)) r.fail(child(w, "mass"), "mass must be > 0 (a free particle needs a positive mass)");
+      }
+      double k_el = 1.0;
+      if (p.contains("elasticity")) {
+        k_el = r.number_in(p["elasticity"], child(w, "elasticity"), 0.0, 1.0);
+      } else if (has_planes && !pinned) {
+        r.fail(child(w, "elasticity"), "missing required key (the scene has planes)");
+      }
+      s.particles.add(x, v, mass, k_el, pinned);
+    }
+  }
+  if (doc.contains("cloth")) append_cloth(s, read_cloth(r, doc["cloth"], "/cloth"));
+  if (s.particles.size() == 0) r.fail("/particles", "the scene has no particles (give particles or a cloth)");
+
+  if (doc.contains("springs")) {
+    const Json& ss = r.require_array(doc["springs"], "/springs");
+    const auto n = static_cast<std::int64_t>(s.particles.size());
+    for (std::size_t k = 0; k < ss.size(); ++k) {
+      const std::string w = child("/springs", k);
+      const Json& sp = r.require_object(ss[k], w);
+      r.only_keys(sp, w, {"i", "j", "stiffness", "rest_length", "damping"});
+      Spring spring;
+      spring.i = static_cast<int>(r.integer(r.require(sp, w, "i"), child(w, "i"), 0, n - 1));
+      spring.j = static_cast<int>(r.integer(r.require(sp, w, "j"), child(w, "j"), 0, n - 1));
+      if (spring.i == spring.j) r.fail(child(w, "j"), "a spring needs two different particles");
+      spring.stiffness = r.number_in(r.require(sp, w, "stiffness"), child(w, "stiffness"), 0.0, 1e12);
+      spring.rest_length = sp.contains("rest_length")
+                               ? r.number_in(sp["rest_length"], child(w, "rest_length"), 0.0, kMaxCoordinate)
+                               : (s.particles.x[spring.j] - s.particles.x[spring.i]).norm();
+      if (sp.contains("damping")) spring.damping = r.number_in(sp["damping"], child(w, "damping"), 0.0, 1e12);
+      s.forces.springs.push_back(spring);
+    }
+  }
+  return s;
+}
+
+Scene load_scene(const std::string& path) { return scene_from_json(read_json_file(path), path); }
+
+}  // namespace tecido::io

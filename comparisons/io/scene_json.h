@@ -1,0 +1,40 @@
+#pragma once
+/// Reads a scene file (DESIGN.md section 3) into a core Scene, validating every value.
+/// Keys (units SI; optional unless said):
+///   integrator  "euler" | "symplectic" | "midpoint" | "rk4"   (default "symplectic", the seed's engine)
+///   dt          step [s], required, 0 < dt <= 10
+///   steps       number of steps, required, 0 <= steps <= 1e9
+///   seed        non-negative integer (default 0); drives random choices (a swirl's phase)
+///   gravity     [gx,gy,gz] [m/s^2]; absent = no gravity
+///   air_drag    linear drag coefficient c >= 0 [kg/s], force -c v; absent = none
+///   wind        [fx,fy,fz] [N per particle], or {"force":[..], "swirl":{"rate":rad/s,
+///               "axis":[..] (default [0,0,1]), "phase":rad (default: drawn from seed)}}
+///   particles   [{"position", "velocity" (default 0), "mass" (> 0, required unless pinned),
+///                 "pinned" (default false), "elasticity" (k in [0,1], required when the scene has planes)}]
+///   springs     [{"i","j","stiffness" (>= 0),"rest_length" (>= 0, default: initial distance),"damping" (>= 0, default 0)}]
+///   planes      [{"position","normal","forward","half_extents":[hx,hy] (>= 0),"friction" (in [0,1], default 0)}]
+///   contact     {"static_threshold","tangential_threshold","bisection_tolerance","max_events_per_step"}
+///   cloth       {"rows","cols","spacing","origin","axis_u","axis_v","total_mass","stiffness_b",
+///                "stiffness_a","damping","elasticity","pins":[[r,c],..]}
+/// Keys starting with '_' are comments; any other unknown key is an error (a typo must not
+/// silently remove a force).
+#include "comparisons/io/json_reader.h"
+#include "core/scene/scene.h"
+
+#include <string>
+
+namespace tecido::io {
+
+/// Loads and validates a scene file; throws InputError (file, JSON pointer, problem).
+Scene load_scene(const std::string& path);
+/// Validates an already-parsed document; `file` names it in messages.
+Scene scene_from_json(const Json& doc, const std::string& file);
+
+/// Bounds used by the validation, documented in README's bad-input table.
+constexpr double kMaxCoordinate = 1e12;  ///< |position| components [m]
+constexpr double kMaxSpeed = 1e8;        ///< |velocity| components [m/s]
+constexpr double kMaxMass = 1e12;        ///< [kg]
+constexpr double kMaxDt = 10.0;          ///< [s]
+constexpr long long kMaxSteps = 1000000000LL;
+
+}  // namespace tecido::io

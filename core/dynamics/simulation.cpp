@@ -1,0 +1,225 @@
+#include "core/dynamics/simulation.h"
+
+#include "core/geometry/segment_plane.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace tecido {
+
+namespace {
+std::int8_t sign_of(double s) { return s > 0.0 ? 1 : (s < 0.0 ? -1 : 0); }
+}  // namespace
+
+Simulation::Simulation(const Scene& scene) : scene_(scene), p_(scene.particles), integ_(scene.integrator) {
+  tol_ = scene_.contact.bisection_tolerance > 0.0 ? scene_.contact.bisection_tolerance : scene_.dt * 0x1.0p-20;
+  accel_ = [this](double t, const std::vector<Vec3>& x, const std::vector<Vec3>& v, std::vector<Vec3>& a) {
+    accelerations(t, x, v, a);
+  };
+  n_planes_ = scene_.planes.size();
+  const std::size_t n = p_.size();
+  side_.assign(n * n_planes_, 1);
+  resting_flag_.assign(n * n_planes_, 0);
+  if (n_planes_ == 0) return;
+  // Initial sides: the side the particle is on; on the plane, the side it comes from (against
+  // its velocity, else against its free acceleration, else the normal's side).
+  compute_accelerations(scene_.forces, p_.inv_mass, 0.0, p_.x, p_.v, a_free_);
+  for (std::size_t i = 0; i < n; ++i) {
+    for (std::size_t k = 0; k < n_planes_; ++k) {
+      const BoundedPlane& pl = scene_.planes[k];
+      std::int8_t s = sign_of(pl.side(p_.x[i]));
+      if (s == 0) s = static_cast<std::int8_t>(-sign_of(pl.normal.dot(p_.v[i])));
+      if (s == 0) s = static_cast<std::int8_t>(-sign_of(pl.normal.dot(a_free_[i])));
+      if (s == 0) s = 1;
+      side_[i * n_planes_ + k] = s;
+    }
+  }
+}
+
+void Simulation::accelerations(double t, const std::vector<Vec3>& x, const std::vector<Vec3>& v,
+                               std::vector<Vec3>& a) {
+  compute_accelerations(scene_.forces, p_.inv_mass, t, x, v, a);
+  // Resting contacts: the plane cancels the part of the acceleration that points into it.
+  for (const auto& [i, k] : resting_) {
+    const Vec3& n = scene_.planes[k].normal;
+    const double an = n.dot(a[i]);
+    if (side_[i * n_planes_ + k] * an < 0.0) a[i] -= an * n;
+  }
+}
+
+bool Simulation::any_hit(const std::vector<Vec3>& x0, const std::vector<Vec3>& x1) {
+  const std::size_t n = p_.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    if (p_.pinned[i]) continue;
+    for (std::size_t k = 0; k < n_planes_; ++k) {
+      const std::size_t id = i * n_planes_ + k;
+      if (resting_flag_[id]) continue;
+      const BoundedPlane& pl = scene_.planes[k];
+      if (side_[id] * pl.side(x1[i]) > 0.0) continue;  // still strictly on its side
+      if (segment_plane(pl, x0[i], x1[i]).hit) return true;
+    }
+  }
+  return false;
+}
+
+void Simulation::collect_hits(const std::vector<Vec3>& x0, const std::vector<Vec3>& x1, std::vector<Hit>& hits) {
+  hits.clear();
+  const std::size_t n = p_.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    if (p_.pinned[i]) continue;
+    Hit best{static_cast<int>(i), -1, 2.0};
+    for (std::size_t k = 0; k < n_planes_; ++k) {
+      const std::size_t id = i * n_planes_ + k;
+      if (resting_flag_[id]) continue;
+      const BoundedPlane& pl = scene_.planes[k];
+      if (side_[id] * pl.side(x1[i]) > 0.0) continue;
+      const SegmentPlaneHit h = segment_plane(pl, x0[i], x1[i]);
+      if (h.hit && h.t < best.t) best = Hit{static_cast<int>(i), static_cast<int>(k), h.t};
+    }
+    if (best.plane >= 0) hits.push_back(best);
+  }
+}
+
+void Simulation::update_sides(const std::vector<Vec3>& x) {
+  // A particle that ended strictly on the other side without a hit went around the rectangle.
+  const std::size_t n = p_.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    for (std::size_t k = 0; k < n_planes_; ++k) {
+      const std::size_t id = i * n_planes_ + k;
+      if (resting_flag_[id]) continue;
+      if (side_[id] * scene_.planes[k].side(x[i]) < 0.0) side_[id] = static_cast<std::int8_t>(-side_[id]);
+    }
+  }
+}
+
+void Simulation::place_on_plane(int i, int k) {
+  // Project onto the plane, then make sure rounding leaves the particle on its own side.
+  const BoundedPlane& pl = scene_.planes[k];
+  const double s = side_[i * n_planes_ + k];
+  Vec3& x = p_.x[i];
+  x -= pl.normal * pl.side(x);
+  for (int tries = 0; tries < 8 && s * pl.side(x) < 0.0; ++tries) {
+    x += pl.normal * (s * std::max(std::abs(pl.side(x)) * 2.0, 1e-300));
+  }
+}
+
+void Simulation::resolve_hit(const Hit& h, const std::vector<Vec3>& x0) {
+  const int i = h.particle, k = h.plane;
+  const BoundedPlane& pl = scene_.planes[k];
+  p_.x[i] = x0[i] + h.t * (p_.x[i] - x0[i]);
+  place_on_plane(i, k);
+  const ContactKind kind = respond_to_contact(p_.v[i], pl.normal, p_.elasticity[i], pl.friction, scene_.contact);
+  if (kind == ContactKind::Elastic) {
+    ++counters_.elastic;
+  } else {
+    ++counters_.static_contacts;
+    const std::size_t id = static_cast<std::size_t>(i) * n_planes_ + k;
+    if (!resting_flag_[id]) {
+      resting_flag_[id] = 1;
+      resting_.emplace_back(i, k);
+    }
+  }
+}
+
+void Simulation::begin_step_resting(double t) {
+  if (resting_.empty()) return;
+  // Release contacts whose free acceleration pulls away or that slid off the rectangle; keep the
+  // others on the plane with no normal velocity, and apply friction once per step.
+  compute_accelerations(scene_.forces, p_.inv_mass, t, p_.x, p_.v, a_free_);
+  std::vector<std::pair<int, int>> kept;
+  kept.reserve(resting_.size());
+  for (const auto& [i, k] : resting_) {
+    const BoundedPlane& pl = scene_.planes[k];
+    const std::size_t id = static_cast<std::size_t>(i) * n_planes_ + k;
+    const double s = side_[id];
+    if (s * pl.normal.dot(a_free_[i]) > 0.0 || !pl.contains_projection(p_.x[i])) {
+      resting_flag_[id] = 0;
+      continue;
+    }
+    place_on_plane(i, k);
+    respond_to_contact(p_.v[i], pl.normal, p_.elasticity[i], pl.friction, scene_.contact);
+    kept.emplace_back(i, k);
+  }
+  resting_.swap(kept);
+}
+
+bool Simulation::check_finite() {
+  const std::size_t n = p_.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    const char* what = !p_.x[i].allFinite() ? "position" : (!p_.v[i].allFinite() ? "velocity" : nullptr);
+    if (what) {
+      instability_ = Instability{step_, static_cast<int>(i), what};
+      return false;
+    }
+  }
+  return true;
+}
+
+bool Simulation::step() {
+  if (instability_) return false;
+  const double h = scene_.dt;
+  double t = time();
+  ++step_;
+  begin_step_resting(t);
+  if (n_planes_ == 0) {
+    integ_.step(accel_, t, h, p_.x, p_.v);
+  } else {
+    double remaining = h;
+    int events = 0;
+    while (remaining > 0.0) {
+      x0_ = p_.x;
+      v0_ = p_.v;
+      integ_.step(accel_, t, remaining, p_.x, p_.v);
+      if (!any_hit(x0_, p_.x)) {
+        update_sides(p_.x);
+        break;
+      }
+      double hi = remaining;
+      if (events >= scene_.contact.max_events_per_step) {
+        // Cap reached: resolve the remaining contacts at their segment crossing, unbisected.
+        ++counters_.cap_hits;
+      } else {
+        // Bisection on the step (fig. 8): lo never crosses, hi does.
+        double lo = 0.0;
+        while (hi - lo > tol_) {
+          const double mid = 0.5 * (lo + hi);
+          if (!(mid > lo && mid < hi)) break;
+          xm_ = x0_;
+          vm_ = v0_;
+          integ_.step(accel_, t, mid, xm_, vm_);
+          ++counters_.bisections;
+          if (any_hit(x0_, xm_)) {
+            hi = mid;
+          } else {
+            lo = mid;
+          }
+        }
+        if (hi < remaining) {
+          p_.x = x0_;
+          p_.v = v0_;
+          integ_.step(accel_, t, hi, p_.x, p_.v);
+        }
+        ++counters_.events;
+      }
+      collect_hits(x0_, p_.x, hits_);
+      for (const Hit& hit : hits_) resolve_hit(hit, x0_);
+      update_sides(p_.x);
+      ++events;
+      t += hi;
+      remaining = (hi >= remaining) ? 0.0 : remaining - hi;
+      if (!check_finite()) return false;
+    }
+  }
+  if (post_step) post_step(*this);
+  return check_finite();
+}
+
+bool Simulation::run(long long n, const std::function<void(const Simulation&)>& on_frame) {
+  for (long long s = 0; s < n; ++s) {
+    if (!step()) return false;
+    if (on_frame) on_frame(*this);
+  }
+  return true;
+}
+
+}  // namespace tecido
