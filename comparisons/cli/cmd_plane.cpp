@@ -8,6 +8,8 @@
 
 namespace tecido::cli {
 
+namespace {
+
 Command add_plane(CLI::App& app) {
   struct Opts {
     std::string cases, engines;
@@ -43,5 +45,9 @@ Command add_plane(CLI::App& app) {
     return 0;
   };
 }
+
+}  // namespace
+
+TECIDO_REGISTER_COMMAND(plane, add_plane);
 
 }  // namespace tecido::cli

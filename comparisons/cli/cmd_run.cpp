@@ -12,6 +12,8 @@
 
 namespace tecido::cli {
 
+namespace {
+
 Command add_run(CLI::App& app) {
   struct Opts {
     std::string scene, integrator, out;
@@ -63,5 +65,9 @@ Command add_run(CLI::App& app) {
     return 0;
   };
 }
+
+}  // namespace
+
+TECIDO_REGISTER_COMMAND(run, add_run);
 
 }  // namespace tecido::cli

@@ -11,8 +11,19 @@ namespace tecido::cli {
 
 using Command = std::function<int()>;
 
-Command add_run(CLI::App& app);
-Command add_plane(CLI::App& app);
+/// A subcommand's registration: adds itself to the app, returns its runner.
+using CommandFactory = Command (*)(CLI::App& app);
+
+/// Every registered subcommand, in name order (filled by TECIDO_REGISTER_COMMAND).
+std::vector<std::pair<std::string, CommandFactory>>& command_registry();
+
+struct CommandRegistrar {
+  CommandRegistrar(const char* name, CommandFactory f) { command_registry().emplace_back(name, f); }
+};
+
+/// In one cmd_*.cpp of the CLI executable: TECIDO_REGISTER_COMMAND(run, add_run);
+#define TECIDO_REGISTER_COMMAND(name, factory) \
+  static const ::tecido::cli::CommandRegistrar tecido_registrar_##name(#name, &factory)
 
 /// Splits "a,b,c" and checks each name against `known`; throws io::UsageError on an unknown one.
 std::vector<std::string> parse_engine_list(const std::string& list, const std::vector<std::string>& known,

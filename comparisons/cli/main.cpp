@@ -4,7 +4,15 @@
 #include "comparisons/io/input_error.h"
 
 #include <iostream>
+#include <algorithm>
 #include <map>
+
+namespace tecido::cli {
+std::vector<std::pair<std::string, CommandFactory>>& command_registry() {
+  static std::vector<std::pair<std::string, CommandFactory>> registry;
+  return registry;
+}
+}  // namespace tecido::cli
 
 int main(int argc, char** argv) {
   CLI::App app{"tecido: a validation harness for cloth and particle physics"};
@@ -16,8 +24,9 @@ int main(int argc, char** argv) {
     tecido::cli::Command c = f(app);
     commands[app.get_subcommands({})[before]] = std::move(c);
   };
-  add(&tecido::cli::add_run);
-  add(&tecido::cli::add_plane);
+  auto registry = tecido::cli::command_registry();
+  std::sort(registry.begin(), registry.end());
+  for (const auto& entry : registry) add(entry.second);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
