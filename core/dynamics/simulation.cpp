@@ -103,12 +103,14 @@ void Simulation::place_on_plane(int i, int k) {
   }
 }
 
-void Simulation::resolve_hit(const Hit& h, const std::vector<Vec3>& x0) {
+void Simulation::resolve_hit(const Hit& h, const std::vector<Vec3>& x0, double t_contact) {
   const int i = h.particle, k = h.plane;
   const BoundedPlane& pl = scene_.planes[k];
   p_.x[i] = x0[i] + h.t * (p_.x[i] - x0[i]);
   place_on_plane(i, k);
+  const Vec3 before = p_.v[i];
   const ContactKind kind = respond_to_contact(p_.v[i], pl.normal, p_.elasticity[i], pl.friction, scene_.contact);
+  if (log_contacts_) contact_log_.push_back(ContactEvent{step_, t_contact, i, k, kind, before, p_.v[i]});
   if (kind == ContactKind::Elastic) {
     ++counters_.elastic;
   } else {
@@ -202,7 +204,7 @@ bool Simulation::step() {
         ++counters_.events;
       }
       collect_hits(x0_, p_.x, hits_);
-      for (const Hit& hit : hits_) resolve_hit(hit, x0_);
+      for (const Hit& hit : hits_) resolve_hit(hit, x0_, t + hi);
       update_sides(p_.x);
       ++events;
       t += hi;

@@ -38,6 +38,17 @@ struct ContactCounters {
   long long bisections = 0;     ///< integrator calls spent bisecting
 };
 
+/// One resolved particle-plane contact, when the simulation logs them.
+struct ContactEvent {
+  long long step = 0;   ///< 1-based step during which the contact happened
+  double time = 0.0;    ///< time of contact [s] (upper end of the bisection bracket)
+  int particle = -1;
+  int plane = -1;
+  ContactKind kind = ContactKind::Elastic;
+  Vec3 velocity_before = Vec3::Zero();
+  Vec3 velocity_after = Vec3::Zero();
+};
+
 class Simulation {
  public:
   explicit Simulation(const Scene& scene);
@@ -58,6 +69,9 @@ class Simulation {
   /// The (particle, plane) pairs in resting contact now.
   const std::vector<std::pair<int, int>>& resting_contacts() const { return resting_; }
   double bisection_tolerance() const { return tol_; }
+  /// Keep a log of every contact (off by default; the log grows with the run).
+  void set_log_contacts(bool on) { log_contacts_ = on; }
+  const std::vector<ContactEvent>& contact_log() const { return contact_log_; }
 
   /// Hook run after each step's plane contacts (e.g. cloth self-collision response).
   /// It may change positions and velocities.
@@ -74,7 +88,7 @@ class Simulation {
   void collect_hits(const std::vector<Vec3>& x0, const std::vector<Vec3>& x1, std::vector<Hit>& hits);
   void update_sides(const std::vector<Vec3>& x);
   void begin_step_resting(double t);
-  void resolve_hit(const Hit& h, const std::vector<Vec3>& x0);
+  void resolve_hit(const Hit& h, const std::vector<Vec3>& x0, double t_contact);
   void place_on_plane(int i, int p);
   bool check_finite();
 
@@ -92,6 +106,8 @@ class Simulation {
   std::vector<std::pair<int, int>> resting_;
   std::vector<Vec3> x0_, v0_, xm_, vm_, a_free_;
   std::vector<Hit> hits_;
+  bool log_contacts_ = false;
+  std::vector<ContactEvent> contact_log_;
 };
 
 }  // namespace tecido
