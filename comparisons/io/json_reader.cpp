@@ -86,6 +86,7 @@ Json parse_json_text(const std::string& text, const std::string& file) {
     }
     return true;
   };
+  if (text.find_first_not_of(" \t\r\n") == std::string::npos) throw InputError(file, "", "empty file, expected JSON");
   try {
     return Json::parse(text, cb, /*allow_exceptions=*/true, /*ignore_comments=*/false);
   } catch (const DuplicateKey& d) {
@@ -95,9 +96,15 @@ Json parse_json_text(const std::string& text, const std::string& file) {
     // nlohmann messages look like "[json.exception.parse_error.101] parse error at line 1, column 5: ...".
     const auto pos = msg.find("parse error");
     if (pos != std::string::npos) msg = msg.substr(pos);
-    throw InputError(file, "", "not valid JSON: " + msg);
+    throw InputError(file, current_child(), "not valid JSON: " + msg);
+  } catch (const Json::out_of_range& e) {
+    // nlohmann reports 1e400 and the like as "number overflow": name where it happened.
+    std::string msg = e.what();
+    const auto pos = msg.find("number overflow");
+    if (pos != std::string::npos) msg = msg.substr(pos);
+    throw InputError(file, current_child(), "number is not finite (" + msg + ")");
   } catch (const Json::exception& e) {
-    throw InputError(file, "", std::string("not valid JSON: ") + e.what());
+    throw InputError(file, current_child(), std::string("not valid JSON: ") + e.what());
   }
 }
 
@@ -113,7 +120,6 @@ Json read_json_file(const std::string& path) {
   ss << in.rdbuf();
   if (in.bad()) throw InputError(path, "", "read error");
   const std::string text = ss.str();
-  if (text.find_first_not_of(" \t\r\n") == std::string::npos) throw InputError(path, "", "empty file, expected JSON");
   return parse_json_text(text, path);
 }
 

@@ -1,0 +1,148 @@
+// Bad scene files: each exits 2 with one line on stderr naming the file, the JSON path and the
+// problem, and nothing is written. Good scenes load as written.
+#include "cli_runner.h"
+#include "comparisons/io/scene_json.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace tecido {
+namespace {
+
+using testing::run_cli;
+
+const char* kGood = R"({"gravity":[0,0,-9.81],"integrator":"symplectic","dt":0.01,"steps":10,
+ "particles":[{"position":[0,0,1],"velocity":[0,0,0],"mass":1.0,"pinned":false,"elasticity":0.5},
+              {"position":[1,0,1],"mass":2.0,"elasticity":0.5}],
+ "springs":[{"i":0,"j":1,"stiffness":4.0,"rest_length":1.0}],
+ "planes":[{"position":[0,0,0],"normal":[0,0,1],"forward":[1,0,0],"half_extents":[2,2],"friction":0.5}]})";
+
+struct BadScene {
+  const char* name;
+  std::string text;
+  const char* where;    // expected JSON pointer in the message ("" = where the parser stopped)
+  const char* problem;  // expected words of the problem
+};
+
+std::string replace(std::string s, const std::string& from, const std::string& to) {
+  const auto pos = s.find(from);
+  EXPECT_NE(pos, std::string::npos) << from;
+  if (pos != std::string::npos) s.replace(pos, from.size(), to);
+  return s;
+}
+
+std::vector<BadScene> bad_scenes() {
+  const std::string g = kGood;
+  return {
+      {"malformed", g.substr(0, g.size() / 2), "", "not valid JSON"},
+      {"not_json", "this is not JSON\n", "", "not valid JSON"},
+      {"empty", "", "/", "empty file"},
+      {"missing_dt", replace(g, "\"dt\":0.01,", ""), "/dt", "missing required key"},
+      {"missing_position", replace(g, "{\"position\":[1,0,1],", "{"), "/particles/1/position", "missing required key"},
+      {"wrong_type_dt", replace(g, "\"dt\":0.01", "\"dt\":\"0.01\""), "/dt", "expected a number"},
+      {"wrong_type_particles", replace(g, "\"particles\":[", "\"particles\":{\"a\":[") + "", "", "not valid JSON"},
+      {"negative_mass", replace(g, "\"mass\":2.0", "\"mass\":-2.0"), "/particles/1/mass", "mass must be > 0"},
+      {"zero_mass", replace(g, "\"mass\":2.0", "\"mass\":0"), "/particles/1/mass", "mass must be > 0"},
+      {"nan_literal", replace(g, "\"dt\":0.01", "\"dt\":NaN"), "", "not valid JSON"},
+      {"inf_literal", replace(g, "\"dt\":0.01", "\"dt\":Infinity"), "", "not valid JSON"},
+      {"huge_number", replace(g, "\"position\":[0,0,1]", "\"position\":[0,0,1e400]"), "/particles/0/position/2", "not finite"},
+      {"absurd_position", replace(g, "\"position\":[0,0,1]", "\"position\":[0,0,1e200]"), "/particles/0/position/2", "out of range"},
+      {"zero_normal", replace(g, "\"normal\":[0,0,1]", "\"normal\":[0,0,0]"), "/planes/0/normal", "must not be zero"},
+      {"forward_parallel", replace(g, "\"forward\":[1,0,0]", "\"forward\":[0,0,3]"), "/planes/0/forward", "parallel"},
+      {"negative_half_extent", replace(g, "\"half_extents\":[2,2]", "\"half_extents\":[2,-1]"), "/planes/0/half_extents/1", ">= 0"},
+      {"dt_zero", replace(g, "\"dt\":0.01", "\"dt\":0"), "/dt", "dt must be > 0"},
+      {"dt_negative", replace(g, "\"dt\":0.01", "\"dt\":-0.01"), "/dt", "dt must be > 0"},
+      {"spring_out_of_range", replace(g, "\"j\":1", "\"j\":7"), "/springs/0/j", "out of range"},
+      {"spring_same_particle", replace(g, "\"j\":1", "\"j\":0"), "/springs/0/j", "two different particles"},
+      {"unknown_integrator", replace(g, "\"symplectic\"", "\"verlet\""), "/integrator", "unknown integrator"},
+      {"unknown_key", replace(g, "\"gravity\"", "\"gravty\""), "/gravty", "unknown key"},
+      {"duplicate_key", replace(g, "\"dt\":0.01,", "\"dt\":0.01,\"dt\":0.02,"), "/", "duplicate key \"dt\""},
+      {"elasticity_out_of_range", replace(g, "\"elasticity\":0.5}]", "\"elasticity\":1.5}]"), "/particles/1/elasticity", "outside"},
+      {"missing_elasticity_with_planes", replace(g, ",\"elasticity\":0.5}]", "}]"), "/particles/1/elasticity", "missing required key"},
+      {"friction_out_of_range", replace(g, "\"friction\":0.5", "\"friction\":2"), "/planes/0/friction", "outside"},
+      {"steps_fraction", replace(g, "\"steps\":10", "\"steps\":10.5"), "/steps", "expected an integer"},
+      {"steps_negative", replace(g, "\"steps\":10", "\"steps\":-1"), "/steps", "out of range"},
+      {"position_short", replace(g, "\"position\":[0,0,1]", "\"position\":[0,1]"), "/particles/0/position", "3 numbers"},
+      {"no_particles", replace(g, R"("particles":[{"position":[0,0,1],"velocity":[0,0,0],"mass":1.0,"pinned":false,"elasticity":0.5},
+              {"position":[1,0,1],"mass":2.0,"elasticity":0.5}],
+ "springs":[{"i":0,"j":1,"stiffness":4.0,"rest_length":1.0}],)", "\"particles\":[],"), "/particles", "no particles"},
+      {"negative_stiffness", replace(g, "\"stiffness\":4.0", "\"stiffness\":-4.0"), "/springs/0/stiffness", "outside"},
+      {"pinned_not_bool", replace(g, "\"pinned\":false", "\"pinned\":\"no\""), "/particles/0/pinned", "expected true or false"},
+  };
+}
+
+TEST(SceneReader, GoodSceneLoads) {
+  const Scene s = io::scene_from_json(io::parse_json_text(kGood, "good.json"), "good.json");
+  ASSERT_EQ(s.particles.size(), 2u);
+  EXPECT_EQ(s.particles.inv_mass[1], 0.5);
+  EXPECT_EQ(s.forces.springs.size(), 1u);
+  EXPECT_EQ(s.planes.size(), 1u);
+  EXPECT_EQ(s.planes[0].right(), Vec3(0, 1, 0));
+  EXPECT_FALSE(s.forces.air_drag.has_value());
+  EXPECT_FALSE(s.forces.wind.has_value());
+  EXPECT_EQ(s.integrator, IntegratorKind::Symplectic);
+}
+
+TEST(SceneReader, EveryBadSceneIsRejectedByTheReaderWithItsPath) {
+  for (const BadScene& b : bad_scenes()) {
+    try {
+      io::scene_from_json(io::parse_json_text(b.text, std::string(b.name) + ".json"), std::string(b.name) + ".json");
+      ADD_FAILURE() << b.name << ": accepted";
+    } catch (const io::InputError& e) {
+      EXPECT_EQ(e.file(), std::string(b.name) + ".json");
+      const std::string msg = e.what();
+      if (*b.where) {
+        EXPECT_NE(msg.find(std::string(": ") + b.where + ":"), std::string::npos) << b.name << ": " << msg;
+      }
+      EXPECT_NE(msg.find(b.problem), std::string::npos) << b.name << ": " << msg;
+    }
+  }
+}
+
+TEST(SceneReader, CliExitsTwoWithOneLineAndWritesNothing) {
+  const auto dir = testing::temp_dir("bad-scenes");
+  for (const BadScene& b : bad_scenes()) {
+    const auto file = dir / (std::string(b.name) + ".json");
+    testing::write_text(file, b.text);
+    const auto out = dir / (std::string(b.name) + "-out");
+    const auto r = run_cli("run '" + file.string() + "' --json --out '" + out.string() + "'");
+    EXPECT_EQ(r.code, 2) << b.name << ": " << r.err;
+    EXPECT_TRUE(r.out.empty()) << b.name;
+    ASSERT_FALSE(r.err.empty()) << b.name;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << b.name << ": " << r.err;
+    EXPECT_NE(r.err.find(file.string()), std::string::npos) << b.name << ": " << r.err;
+    if (*b.where) {
+      EXPECT_NE(r.err.find(std::string(": ") + b.where + ":"), std::string::npos) << b.name << ": " << r.err;
+    }
+    EXPECT_FALSE(std::filesystem::exists(out)) << b.name;
+  }
+  std::filesystem::remove_all(dir);
+}
+
+TEST(SceneReader, DirectoryAndMissingFileAreBadInput) {
+  const auto dir = testing::temp_dir("dir-scene");
+  auto r = run_cli("run '" + dir.string() + "'");
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find("is a directory"), std::string::npos) << r.err;
+  r = run_cli("run '" + (dir / "nope.json").string() + "'");
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find("no such file"), std::string::npos) << r.err;
+  std::filesystem::remove_all(dir);
+}
+
+TEST(SceneReader, UnknownEngineAndIntegratorAreUsageErrors) {
+  const auto dir = testing::temp_dir("usage");
+  testing::write_text(dir / "s.json", kGood);
+  auto r = run_cli("run '" + (dir / "s.json").string() + "' --integrator verlet");
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find("unknown integrator"), std::string::npos);
+  testing::write_text(dir / "cases.json", R"({"cases":[]})");
+  r = run_cli("plane --cases '" + (dir / "cases.json").string() + "' --engines core,bogus --json");
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find("unknown plane engine \"bogus\""), std::string::npos) << r.err;
+  std::filesystem::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace tecido
