@@ -1,0 +1,13 @@
+#include "comparisons/suites/order_suite.h"
+#include "comparisons/suites/suite.h"
+
+namespace tecido::suites {
+
+const std::vector<SuiteEntry>& suite_registry() {
+  static const std::vector<SuiteEntry> suites = {
+      {"order", "observed error order of each integrator on analytic problems", &run_order_suite},
+  };
+  return suites;
+}
+
+}  // namespace tecido::suites
