@@ -1,4 +1,5 @@
 #include "comparisons/suites/order_suite.h"
+#include "comparisons/suites/plane_suite.h"
 #include "comparisons/suites/suite.h"
 
 namespace tecido::suites {
@@ -6,6 +7,7 @@ namespace tecido::suites {
 const std::vector<SuiteEntry>& suite_registry() {
   static const std::vector<SuiteEntry> suites = {
       {"order", "observed error order of each integrator on analytic problems", &run_order_suite},
+      {"plane", "segment vs bounded plane agreement with the exact referee; bisected contact time", &run_plane_suite},
   };
   return suites;
 }
