@@ -1,10 +1,23 @@
 #include "comparisons/engines/segment_plane_engines.h"
 
+#ifdef TECIDO_HAVE_REFERENCE
+#include "reference/exact_referee.h"
+#include "reference/fcl_adapter.h"
+#endif
+
 namespace tecido {
 
 const std::vector<SegmentPlaneEngine>& segment_plane_engines() {
   static const std::vector<SegmentPlaneEngine> engines = {
       {"core", [](const BoundedPlane& p, const Vec3& a, const Vec3& b) { return std::optional(segment_plane(p, a, b)); }},
+#ifdef TECIDO_HAVE_REFERENCE
+      {"fcl", &reference::fcl_segment_plane},
+      {"exact",
+       [](const BoundedPlane& p, const Vec3& a, const Vec3& b) {
+         const reference::ExactSegmentPlane e = reference::exact_segment_plane(p, a, b);
+         return std::optional(SegmentPlaneHit{e.hit, e.t});
+       }},
+#endif
   };
   return engines;
 }

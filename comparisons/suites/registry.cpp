@@ -1,6 +1,10 @@
+#include "comparisons/suites/bench_suite.h"
 #include "comparisons/suites/drift_suite.h"
 #include "comparisons/suites/order_suite.h"
 #include "comparisons/suites/plane_suite.h"
+#include "comparisons/suites/stability_suite.h"
+#include "comparisons/suites/tradeoff_suite.h"
+#include "comparisons/suites/tritri_suite.h"
 #include "comparisons/suites/suite.h"
 
 namespace tecido::suites {
@@ -10,6 +14,10 @@ const std::vector<SuiteEntry>& suite_registry() {
       {"order", "observed error order of each integrator on analytic problems", &run_order_suite},
       {"drift", "energy and momentum over long runs; core vs Bullet on identical cloth", &run_drift_suite},
       {"plane", "segment vs bounded plane agreement with the exact referee; bisected contact time", &run_plane_suite},
+      {"tritri", "triangle-triangle engines vs the exact referee by category, ns per pair", &run_tritri_suite},
+      {"bench", "runs tecido-bench: time per pair/frame/step and ratios against the reference engines", &run_bench_suite},
+      {"stability", "largest stable step per integrator vs theory; offsets, mass ratios, tiny springs, resting, tunnelling", &run_stability_suite},
+      {"tradeoff", "cost against accuracy of every engine and step on hanging cloths; Pareto front", &run_tradeoff_suite},
   };
   return suites;
 }

@@ -1,0 +1,44 @@
+#include "comparisons/io/tri_pairs.h"
+
+namespace tecido::io {
+
+namespace {
+Triangle read_triangle(const JsonReader& r, const Json& j, const std::string& w) {
+  if (!j.is_array() || j.size() != 3) r.fail(w, "expected an array of 3 points");
+  Triangle t;
+  for (std::size_t k = 0; k < 3; ++k) t[k] = r.vec3(j[k], child(w, k), 1e15);
+  return t;
+}
+}  // namespace
+
+std::vector<TriPair> tri_pairs_from_json(const Json& doc, const std::string& file) {
+  JsonReader r(file);
+  const Json& pairs = r.require_array(r.require(doc, "", "pairs"), "/pairs");
+  std::vector<TriPair> out;
+  out.reserve(pairs.size());
+  for (std::size_t k = 0; k < pairs.size(); ++k) {
+    const std::string w = child("/pairs", k);
+    const Json& p = r.require_object(pairs[k], w);
+    TriPair tp;
+    tp.id = p.contains("id") ? (p["id"].is_string() ? p["id"].get<std::string>() : p["id"].dump()) : std::to_string(k);
+    tp.a = read_triangle(r, r.require(p, w, "a"), child(w, "a"));
+    tp.b = read_triangle(r, r.require(p, w, "b"), child(w, "b"));
+    out.push_back(std::move(tp));
+  }
+  return out;
+}
+
+std::vector<TriPair> load_tri_pairs(const std::string& path) { return tri_pairs_from_json(read_json_file(path), path); }
+
+Json tri_pairs_to_json(const std::vector<TriPair>& pairs) {
+  Json arr = Json::array();
+  auto tri = [](const Triangle& t) {
+    Json j = Json::array();
+    for (const Vec3& v : t) j.push_back({v.x(), v.y(), v.z()});
+    return j;
+  };
+  for (const auto& p : pairs) arr.push_back({{"id", p.id}, {"a", tri(p.a)}, {"b", tri(p.b)}});
+  return Json{{"pairs", arr}};
+}
+
+}  // namespace tecido::io

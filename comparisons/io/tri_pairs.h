@@ -1,0 +1,23 @@
+#pragma once
+/// The pairs file of `tecido tritri` (DESIGN.md section 3):
+/// {"pairs":[{"id":"..","a":[[x,y,z],[x,y,z],[x,y,z]],"b":[[..],[..],[..]]}]}. Unknown keys
+/// (labels) are ignored. Coordinates must be finite (|x| <= 1e15).
+#include "comparisons/io/json_reader.h"
+#include "core/geometry/types.h"
+
+#include <string>
+#include <vector>
+
+namespace tecido::io {
+
+struct TriPair {
+  std::string id;
+  Triangle a, b;
+};
+
+std::vector<TriPair> load_tri_pairs(const std::string& path);
+std::vector<TriPair> tri_pairs_from_json(const Json& doc, const std::string& file);
+/// The inverse (17 significant digits: the doubles round-trip exactly).
+Json tri_pairs_to_json(const std::vector<TriPair>& pairs);
+
+}  // namespace tecido::io

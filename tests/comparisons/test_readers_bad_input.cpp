@@ -1,0 +1,141 @@
+// Bad input for the pairs, cases and tolerance readers: exit 2 (CLI) or io::InputError with the
+// file, the JSON pointer and the problem.
+#include "cli_runner.h"
+#include "comparisons/io/plane_cases.h"
+#include "comparisons/io/tri_pairs.h"
+#include "comparisons/suites/suite.h"
+
+#include <gtest/gtest.h>
+
+namespace tecido {
+namespace {
+
+struct Bad {
+  const char* name;
+  const char* text;
+  const char* where;
+  const char* problem;
+};
+
+template <class F>
+void expect_all_rejected(const std::vector<Bad>& bad, F read) {
+  for (const Bad& b : bad) {
+    try {
+      read(io::parse_json_text(b.text, b.name), b.name);
+      ADD_FAILURE() << b.name << ": accepted";
+    } catch (const io::InputError& e) {
+      const std::string msg = e.what();
+      EXPECT_EQ(msg.rfind(std::string(b.name) + ": ", 0), 0u) << msg;
+      if (*b.where) {
+        EXPECT_NE(msg.find(std::string(": ") + b.where + ":"), std::string::npos) << b.name << ": " << msg;
+      }
+      EXPECT_NE(msg.find(b.problem), std::string::npos) << b.name << ": " << msg;
+    }
+  }
+}
+
+const char* kTri = "[[0,0,0],[1,0,0],[0,1,0]]";
+
+TEST(PairsReader, RejectsBadPairs) {
+  const std::string t = kTri;
+  const std::vector<std::string> texts = {
+      R"({"pair":[]})",
+      R"({"pairs":{}})",
+      R"({"pairs":[{"id":"a","a":)" + t + "}]}",
+      R"({"pairs":[{"id":"a","a":[[0,0,0],[1,0,0]],"b":)" + t + "}]}",
+      R"({"pairs":[{"id":"a","a":[[0,0,0],[1,0,0],[0,1]],"b":)" + t + "}]}",
+      R"({"pairs":[{"id":"a","a":[[0,0,0],[1,0,0],[0,"1",0]],"b":)" + t + "}]}",
+      R"({"pairs":[{"id":"a","a":[[0,0,0],[1,0,0],[0,1e400,0]],"b":)" + t + "}]}",
+      R"({"pairs":[{"id":"a","a":[[0,0,0],[1,0,0],[0,1e16,0]],"b":)" + t + "}]}",
+      R"({"pairs":[7]})",
+  };
+  static std::vector<std::string> keep;
+  keep = texts;
+  const std::vector<Bad> bad = {
+      {"p1.json", keep[0].c_str(), "/pairs", "missing required key"},
+      {"p2.json", keep[1].c_str(), "/pairs", "expected an array"},
+      {"p3.json", keep[2].c_str(), "/pairs/0/b", "missing required key"},
+      {"p4.json", keep[3].c_str(), "/pairs/0/a", "3 points"},
+      {"p5.json", keep[4].c_str(), "/pairs/0/a/2", "3 numbers"},
+      {"p6.json", keep[5].c_str(), "/pairs/0/a/2/1", "expected a number"},
+      {"p7.json", keep[6].c_str(), "/pairs/0/a/2/1", "not finite"},
+      {"p8.json", keep[7].c_str(), "/pairs/0/a/2/1", "out of range"},
+      {"p9.json", keep[8].c_str(), "/pairs/0", "expected an object"},
+  };
+  expect_all_rejected(bad, [](const io::Json& j, const std::string& f) { return io::tri_pairs_from_json(j, f); });
+}
+
+TEST(PairsReader, IgnoresUnknownKeysAndRoundTrips) {
+  const auto pairs = io::tri_pairs_from_json(
+      io::parse_json_text(R"({"pairs":[{"id":"x","label":"coplanar","a":[[0,0,0],[1,0,0],[0,1,0]],"b":[[0.1,0.1,0],[2,0,0],[0,2,0]]}]})", "f"), "f");
+  ASSERT_EQ(pairs.size(), 1u);
+  const auto again = io::tri_pairs_from_json(io::parse_json_text(io::tri_pairs_to_json(pairs).dump(), "g"), "g");
+  EXPECT_EQ(again[0].a[1], pairs[0].a[1]);
+  EXPECT_EQ(again[0].b[0], pairs[0].b[0]);
+}
+
+TEST(CasesReader, RejectsBadCases) {
+  const std::vector<Bad> bad = {
+      {"c1.json", R"({"cases":[{"id":"a","plane":{"position":[0,0,0],"normal":[0,0,0],"forward":[1,0,0],"half_extents":[1,1]},"from":[0,0,1],"to":[0,0,-1]}]})",
+       "/cases/0/plane/normal", "must not be zero"},
+      {"c2.json", R"({"cases":[{"id":"a","plane":{"position":[0,0,0],"normal":[0,0,1],"forward":[0,0,2],"half_extents":[1,1]},"from":[0,0,1],"to":[0,0,-1]}]})",
+       "/cases/0/plane/forward", "parallel"},
+      {"c3.json", R"({"cases":[{"id":"a","plane":{"position":[0,0,0],"normal":[0,0,1],"forward":[1,0,0],"half_extents":[-1,1]},"from":[0,0,1],"to":[0,0,-1]}]})",
+       "/cases/0/plane/half_extents/0", ">= 0"},
+      {"c4.json", R"({"cases":[{"id":"a","plane":{"position":[0,0,0],"normal":[0,0,1],"forward":[1,0,0],"half_extents":[1,1]},"to":[0,0,-1]}]})",
+       "/cases/0/from", "missing required key"},
+      {"c5.json", R"({"cases":[{"id":"a","from":[0,0,1],"to":[0,0,-1]}]})", "/cases/0/plane", "missing required key"},
+      {"c6.json", R"({"cases":"none"})", "/cases", "expected an array"},
+      {"c7.json", R"([1,2,3])", "/", "expected an object"},
+  };
+  expect_all_rejected(bad, [](const io::Json& j, const std::string& f) { return io::plane_cases_from_json(j, f); });
+}
+
+TEST(ToleranceFile, RejectsBadFilesAndMissingKeys) {
+  const auto dir = testing::temp_dir("tolerances");
+  testing::write_text(dir / "t1.json", R"({"order":{"band":"wide"}})");
+  testing::write_text(dir / "t2.json", R"({"order":5})");
+  testing::write_text(dir / "t3.json", R"({"order":{"band":0.15,"band":0.2}})");
+  for (const char* f : {"t1.json", "t2.json", "t3.json"}) {
+    EXPECT_THROW(suites::Tolerances::load((dir / f).string()), io::InputError) << f;
+  }
+  testing::write_text(dir / "t4.json", R"({"order":{"band":0.15}})");
+  const auto t = suites::Tolerances::load((dir / "t4.json").string());
+  EXPECT_EQ(t.get("/order/band"), 0.15);
+  try {
+    t.get("/order/roundoff_floor");
+    ADD_FAILURE();
+  } catch (const io::InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("/order/roundoff_floor: missing tolerance"), std::string::npos) << e.what();
+  }
+  // The CLI: a tolerance file missing a key the suite needs is bad input, exit 2, no report.
+  const auto r = testing::run_cli("suite order --tolerances '" + (dir / "t4.json").string() + "' --out '" + (dir / "out").string() + "'");
+  EXPECT_EQ(r.code, 2) << r.err;
+  EXPECT_NE(r.err.find("missing tolerance"), std::string::npos) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(dir / "out" / "report.json"));
+  std::filesystem::remove_all(dir);
+}
+
+TEST(TritriCli, PairsFileContractAndBadInput) {
+  const auto dir = testing::temp_dir("tritri");
+  testing::write_text(dir / "pairs.json", R"({"pairs":[
+    {"id":"cross","a":[[0,0,0],[1,0,0],[0,1,0]],"b":[[0.2,0.2,-1],[0.2,0.2,1],[0.3,0.9,0.5]]},
+    {"id":"apart","a":[[0,0,0],[1,0,0],[0,1,0]],"b":[[0,0,2],[1,0,2],[0,1,2]]}]})");
+  auto r = testing::run_cli("tritri --pairs '" + (dir / "pairs.json").string() + "' --engines core --json");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["results"][0]["id"], "cross");
+  EXPECT_EQ(j["results"][0]["core"], true);
+  EXPECT_EQ(j["results"][1]["core"], false);
+  r = testing::run_cli("tritri --pairs '" + (dir / "pairs.json").string() + "' --engines core,nope --json");
+  EXPECT_EQ(r.code, 2);
+  testing::write_text(dir / "bad.json", R"({"pairs":[{"id":"x","a":[[0,0,0],[1,0,0]],"b":[[0,0,0],[1,0,0],[0,1,0]]}]})");
+  r = testing::run_cli("tritri --pairs '" + (dir / "bad.json").string() + "' --json");
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find("/pairs/0/a"), std::string::npos) << r.err;
+  EXPECT_TRUE(r.out.empty());
+  std::filesystem::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace tecido
