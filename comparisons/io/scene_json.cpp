@@ -77,6 +77,27 @@ ClothGridSpec read_cloth(const JsonReader& r, const Json& j, const std::string& 
   return c;
 }
 
+/// "self_collision": {"response": "none"|"gia"|"edge1"|"edge2"|"edge3"|"gia+edge3",
+///                    "strength": force per pushed particle [N] (>= 0; required unless "none"),
+///                    "every": detect after every k-th step (integer >= 1, default 1)}
+/// Needs a cloth (the triangle mesh it tests). See core/cloth/self_collision_settings.h.
+SelfCollisionSettings read_self_collision(const JsonReader& r, const Json& j, const std::string& w) {
+  r.require_object(j, w);
+  r.only_keys(j, w, {"response", "strength", "every"});
+  SelfCollisionSettings sc;
+  const std::string name = r.string(r.require(j, w, "response"), child(w, "response"));
+  const auto resp = parse_self_collision_response(name);
+  if (!resp) r.fail(child(w, "response"), "unknown response \"" + name + "\" (none, gia, edge1, edge2, edge3, gia+edge3)");
+  sc.response = *resp;
+  if (j.contains("strength")) {
+    sc.strength = r.number_in(j["strength"], child(w, "strength"), 0.0, 1e9);
+  } else if (sc.response != SelfCollisionResponse::None) {
+    r.fail(child(w, "strength"), "missing required key (the response needs a force)");
+  }
+  if (j.contains("every")) sc.every = static_cast<int>(r.integer(j["every"], child(w, "every"), 1, 1000000000));
+  return sc;
+}
+
 }  // namespace
 
 Scene scene_from_json(const Json& doc, const std::string& file) {
@@ -84,7 +105,7 @@ Scene scene_from_json(const Json& doc, const std::string& file) {
   const std::string root;
   r.require_object(doc, root);
   r.only_keys(doc, root, {"integrator", "dt", "steps", "seed", "gravity", "air_drag", "wind", "particles", "springs",
-                          "planes", "contact", "cloth"});
+                          "planes", "contact", "cloth", "self_collision"});
   Scene s;
   if (doc.contains("integrator")) {
     const std::string name = r.string(doc["integrator"], "/integrator");
@@ -146,6 +167,10 @@ Scene scene_from_json(const Json& doc, const std::string& file) {
     }
   }
   if (doc.contains("cloth")) append_cloth(s, read_cloth(r, doc["cloth"], "/cloth"));
+  if (doc.contains("self_collision")) {
+    s.self_collision = read_self_collision(r, doc["self_collision"], "/self_collision");
+    if (s.triangles.empty()) r.fail("/self_collision", "self-collision needs a cloth (the triangle mesh it tests)");
+  }
   if (s.particles.size() == 0) r.fail("/particles", "the scene has no particles (give particles or a cloth)");
 
   if (doc.contains("springs")) {

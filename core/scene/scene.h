@@ -3,6 +3,7 @@
 /// names (DESIGN.md section 4): optional parts that are absent cost nothing. Loading from JSON
 /// lives in comparisons/io (core depends on Eigen alone).
 #include "core/cloth/cloth_grid.h"
+#include "core/cloth/self_collision_settings.h"
 #include "core/dynamics/force_model.h"
 #include "core/dynamics/integrator.h"
 #include "core/dynamics/particles.h"
@@ -35,6 +36,9 @@ struct Scene {
   int cloth_first_particle = 0;
   /// Triangle mesh over particle indices (the cloth's), in the builder's documented order.
   std::vector<std::array<int, 3>> triangles;
+  /// Self-collision detection and response over `triangles`, when the scene asks for it
+  /// (core/cloth/self_collision_response.h installs it as the simulation's post_step hook).
+  std::optional<SelfCollisionSettings> self_collision;
 };
 
 }  // namespace tecido

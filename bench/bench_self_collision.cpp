@@ -1,0 +1,73 @@
+// Cloth self-collision detection per frame: broad phase (refitted box tree) + exact narrow
+// phase, on an n x n grid cloth folded over itself with a ripple, so the two layers cross
+// along curves (a crumpled frame's worst case: every triangle has a near neighbour layer).
+#include "core/cloth/cloth_builder.h"
+#include "core/cloth/self_collision.h"
+
+#include <benchmark/benchmark.h>
+
+#include <cmath>
+
+namespace {
+
+using namespace tecido;
+
+struct Frame {
+  std::vector<Vec3> rest, x;
+  std::vector<std::array<int, 3>> tris;
+};
+
+// n x n cloth of side 1 m: folded at u = 0.5 so the right half lies back over the left half,
+// 0.02 m above it, with a ripple of amplitude 0.03 m: the layers cross along curves.
+Frame folded_cloth(int n) {
+  Scene s;
+  ClothGridSpec spec;
+  spec.rows = spec.cols = n;
+  spec.spacing = 1.0 / (n - 1);
+  spec.total_mass = 1.0;
+  spec.stiffness_b = 1.0;
+  append_cloth(s, spec);
+  Frame f;
+  f.rest = s.particles.x;
+  f.tris = s.triangles;
+  f.x = f.rest;
+  for (auto& p : f.x) {
+    const double u = p.x(), v = p.y();
+    const double ripple = 0.03 * std::sin(9.0 * u + 1.0) * std::sin(7.0 * v);
+    if (u <= 0.5) {
+      p = Vec3(u, v, ripple);
+    } else {
+      const double a = (u - 0.5) / 0.02;  // a tight half-turn of radius 0.01 then back
+      if (a < M_PI) {
+        p = Vec3(0.5 + 0.01 * std::sin(a), v, 0.01 - 0.01 * std::cos(a) + ripple);
+      } else {
+        p = Vec3(0.5 - (u - 0.5 - 0.02 * M_PI), v, 0.02 - ripple);
+      }
+    }
+  }
+  return f;
+}
+
+void BM_SelfCollisionFrame(benchmark::State& state) {
+  const Frame f = folded_cloth(static_cast<int>(state.range(0)));
+  SelfCollisionDetector det(f.tris, f.rest);
+  std::size_t pairs = 0;
+  for (auto _ : state) {
+    pairs = det.detect(f.x).size();
+    benchmark::DoNotOptimize(pairs);
+  }
+  state.counters["triangles"] = static_cast<double>(f.tris.size());
+  state.counters["pairs"] = static_cast<double>(pairs);
+  state.counters["candidates"] = static_cast<double>(det.last_candidates());
+}
+BENCHMARK(BM_SelfCollisionFrame)->Arg(32)->Arg(64)->Arg(128)->Arg(256)->Unit(benchmark::kMillisecond);
+
+void BM_SelfCollisionFlatFrame(benchmark::State& state) {
+  const Frame f = folded_cloth(static_cast<int>(state.range(0)));
+  SelfCollisionDetector det(f.tris, f.rest);
+  for (auto _ : state) benchmark::DoNotOptimize(det.detect(f.rest).size());
+  state.counters["candidates"] = static_cast<double>(det.last_candidates());
+}
+BENCHMARK(BM_SelfCollisionFlatFrame)->Arg(32)->Arg(64)->Arg(128)->Arg(256)->Unit(benchmark::kMillisecond);
+
+}  // namespace
