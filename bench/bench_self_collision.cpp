@@ -3,6 +3,9 @@
 // along curves (a crumpled frame's worst case: every triangle has a near neighbour layer).
 #include "core/cloth/cloth_builder.h"
 #include "core/cloth/self_collision.h"
+#ifdef TECIDO_HAVE_REFERENCE
+#include "reference/fcl_adapter.h"
+#endif
 
 #include <benchmark/benchmark.h>
 
@@ -48,26 +51,48 @@ Frame folded_cloth(int n) {
   return f;
 }
 
-void BM_SelfCollisionFrame(benchmark::State& state) {
+// BM_SelfCollision/<engine>/<n>: one frame of the folded n x n cloth.
+//   core       refitted box tree + exact narrow phase (the tree is built once, outside the loop)
+//   core-flat  the same on the flat rest shape (every neighbour box overlaps: the broad phase's worst case)
+//   core-brute all pairs + exact narrow phase (n <= 64)
+//   fcl        FCL's OBBRSS BVH of the mesh against itself, adjacent pairs filtered (reference build)
+void core_frame(benchmark::State& state, bool flat) {
   const Frame f = folded_cloth(static_cast<int>(state.range(0)));
   SelfCollisionDetector det(f.tris, f.rest);
   std::size_t pairs = 0;
   for (auto _ : state) {
-    pairs = det.detect(f.x).size();
+    pairs = det.detect(flat ? f.rest : f.x).size();
     benchmark::DoNotOptimize(pairs);
   }
   state.counters["triangles"] = static_cast<double>(f.tris.size());
   state.counters["pairs"] = static_cast<double>(pairs);
   state.counters["candidates"] = static_cast<double>(det.last_candidates());
 }
-BENCHMARK(BM_SelfCollisionFrame)->Arg(32)->Arg(64)->Arg(128)->Arg(256)->Unit(benchmark::kMillisecond);
 
-void BM_SelfCollisionFlatFrame(benchmark::State& state) {
+void brute_frame(benchmark::State& state) {
   const Frame f = folded_cloth(static_cast<int>(state.range(0)));
-  SelfCollisionDetector det(f.tris, f.rest);
-  for (auto _ : state) benchmark::DoNotOptimize(det.detect(f.rest).size());
-  state.counters["candidates"] = static_cast<double>(det.last_candidates());
+  for (auto _ : state) benchmark::DoNotOptimize(self_collision_pairs_brute(f.x, f.tris).size());
+  state.counters["triangles"] = static_cast<double>(f.tris.size());
 }
-BENCHMARK(BM_SelfCollisionFlatFrame)->Arg(32)->Arg(64)->Arg(128)->Arg(256)->Unit(benchmark::kMillisecond);
+
+#ifdef TECIDO_HAVE_REFERENCE
+void fcl_frame(benchmark::State& state) {
+  const Frame f = folded_cloth(static_cast<int>(state.range(0)));
+  for (auto _ : state) benchmark::DoNotOptimize(reference::fcl_self_collision(f.x, f.tris).size());
+  state.counters["triangles"] = static_cast<double>(f.tris.size());
+}
+#endif
+
+const int registered = [] {
+  for (int n : {32, 64, 128, 256}) {
+    benchmark::RegisterBenchmark("BM_SelfCollision/core", core_frame, false)->Arg(n)->Unit(benchmark::kMillisecond);
+    benchmark::RegisterBenchmark("BM_SelfCollision/core-flat", core_frame, true)->Arg(n)->Unit(benchmark::kMillisecond);
+    if (n <= 64) benchmark::RegisterBenchmark("BM_SelfCollision/core-brute", brute_frame)->Arg(n)->Unit(benchmark::kMillisecond);
+#ifdef TECIDO_HAVE_REFERENCE
+    benchmark::RegisterBenchmark("BM_SelfCollision/fcl", fcl_frame)->Arg(n)->Unit(benchmark::kMillisecond);
+#endif
+  }
+  return 0;
+}();
 
 }  // namespace

@@ -117,6 +117,8 @@ inline int orient3d_sign(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3
   // Overflow makes det or errbound inf/NaN: both comparisons fail and the exact path runs.
   if (det > errbound) return 1;
   if (-det > errbound) return -1;
+  // A column of exact zeros (the four points share a coordinate) makes the determinant 0.
+  if ((adx == 0 && bdx == 0 && cdx == 0) || (ady == 0 && bdy == 0 && cdy == 0) || (adz == 0 && bdz == 0 && cdz == 0)) return 0;
   return detail::orient3d_sign_exact(a, b, c, d);
 }
 

@@ -46,8 +46,18 @@ void plane_sides(const Triangle& t, const Triangle& x, int s[3]) {
     decided[i] = std::fabs(det) > errbound;  // false for NaN too
   }
   if (__builtin_expect(!(decided[0] & decided[1] & decided[2]), 0)) {
-    for (int i = 0; i < 3; ++i)
-      if (!decided[i]) s[i] = -detail::orient3d_sign_exact(t[0], t[1], t[2], x[i]);
+    for (int i = 0; i < 3; ++i) {
+      if (decided[i]) continue;
+      // Exactly zero without the exact path when the four points share one coordinate (an
+      // axis-aligned plane, e.g. a flat cloth at rest): a difference of doubles is 0 exactly
+      // when they are equal, and a zero column makes the determinant exactly 0.
+      const double wx = x[i][0] - t[0][0], wy = x[i][1] - t[0][1], wz = x[i][2] - t[0][2];
+      if ((ux == 0 && vx == 0 && wx == 0) || (uy == 0 && vy == 0 && wy == 0) || (uz == 0 && vz == 0 && wz == 0)) {
+        s[i] = 0;
+      } else {
+        s[i] = -detail::orient3d_sign_exact(t[0], t[1], t[2], x[i]);
+      }
+    }
   }
 }
 
