@@ -2,6 +2,7 @@
 #include "comparisons/suites/drift_suite.h"
 #include "comparisons/suites/order_suite.h"
 #include "comparisons/suites/plane_suite.h"
+#include "comparisons/suites/selfcollision_suite.h"
 #include "comparisons/suites/stability_suite.h"
 #include "comparisons/suites/tradeoff_suite.h"
 #include "comparisons/suites/tritri_suite.h"
@@ -15,6 +16,7 @@ const std::vector<SuiteEntry>& suite_registry() {
       {"drift", "energy and momentum over long runs; core vs Bullet on identical cloth", &run_drift_suite},
       {"plane", "segment vs bounded plane agreement with the exact referee; bisected contact time", &run_plane_suite},
       {"tritri", "triangle-triangle engines vs the exact referee by category, ns per pair", &run_tritri_suite},
+      {"selfcollision", "self-collision pair sets per engine vs exact on recorded frames: precision, recall, time", &run_selfcollision_suite},
       {"bench", "runs tecido-bench: time per pair/frame/step and ratios against the reference engines", &run_bench_suite},
       {"stability", "largest stable step per integrator vs theory; offsets, mass ratios, tiny springs, resting, tunnelling", &run_stability_suite},
       {"tradeoff", "cost against accuracy of every engine and step on hanging cloths; Pareto front", &run_tradeoff_suite},
