@@ -14,6 +14,7 @@
 //  - explicit mode is the default and is restated every step by the world (setImplicit);
 //  - the world clamps each velocity component to m_maxDisplacement / dt (1000 m / dt).
 #include "reference/bullet_deformable.h"
+#include "reference/plane_box.h"
 
 #include <BulletCollision/BroadphaseCollision/btDbvtBroadphase.h>
 #include <BulletCollision/CollisionDispatch/btCollisionDispatcher.h>
@@ -214,40 +215,19 @@ void DeformableTwin::Impl::build_springs() {
 
 void DeformableTwin::Impl::build_planes() {
   contact_offset = options.collision_margin;
-  const auto& p = scene.particles;
   for (std::size_t k = 0; k < scene.planes.size(); ++k) {
-    const BoundedPlane& pl = scene.planes[k];
-    bool pos = false, neg = false;
-    for (std::size_t i = 0; i < p.size(); ++i) {
-      if (p.pinned[i]) continue;
-      const double s = pl.side(p.x[i]);
-      pos = pos || s > 0.0;
-      neg = neg || s < 0.0;
-    }
-    const double t = options.plane_thickness;
-    double centre_offset = 0.0;  // along the normal
-    if (pos && !neg) {
-      centre_offset = -0.5 * t;
-    } else if (neg && !pos) {
-      centre_offset = 0.5 * t;
-    } else {
-      contact_offset = std::max(contact_offset, 0.5 * t + options.collision_margin);
-      not_modelled.push_back("two-sided plane " + std::to_string(k) +
-                             ": free particles start on both sides, so the static box (thickness " + num(t) +
-                             " m) is centred on the plane and its faces stand " + num(0.5 * t) + " m off it");
-    }
-    const Vec3 f = pl.forward, r = pl.right(), n = pl.normal;
-    const double hx = std::max(pl.half_extents.x(), 1e-9), hy = std::max(pl.half_extents.y(), 1e-9);
-    auto shape = std::make_unique<btBoxShape>(btVector3(hx, hy, 0.5 * t));
-    // btBoxShape keeps its outer faces at the half extents whatever the margin; a margin larger
-    // than a half extent would round the box, so keep it below every half extent.
-    shape->setMargin(std::min({0.04, 0.5 * hx, 0.5 * hy, 0.25 * t}));
+    const PlaneBox box = plane_box(scene, k, options.plane_thickness, options.collision_margin);
+    contact_offset = std::max(contact_offset, box.contact_offset);
+    if (!box.note.empty()) not_modelled.push_back(box.note);
+    auto shape = std::make_unique<btBoxShape>(to_bt(box.half_extents));
+    shape->setMargin(box.shape_margin);
+    const Vec3 &f = box.axes[0], &r = box.axes[1], &n = box.axes[2];
     btTransform tr;
     tr.setBasis(btMatrix3x3(f.x(), r.x(), n.x(), f.y(), r.y(), n.y(), f.z(), r.z(), n.z()));
-    tr.setOrigin(to_bt(pl.position + centre_offset * n));
+    tr.setOrigin(to_bt(box.centre));
     auto state = std::make_unique<btDefaultMotionState>(tr);
     btRigidBody::btRigidBodyConstructionInfo info(0.0, state.get(), shape.get(), btVector3(0, 0, 0));
-    info.m_friction = pl.friction;
+    info.m_friction = scene.planes[k].friction;
     info.m_restitution = 0.0;
     auto rb = std::make_unique<btRigidBody>(info);
     world->addRigidBody(rb.get());

@@ -1,5 +1,7 @@
 #include "comparisons/io/json_reader.h"
 
+#include "comparisons/io/text_file.h"
+
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -108,20 +110,7 @@ Json parse_json_text(const std::string& text, const std::string& file) {
   }
 }
 
-Json read_json_file(const std::string& path) {
-  namespace fs = std::filesystem;
-  std::error_code ec;
-  const auto st = fs::status(path, ec);
-  if (ec || !fs::exists(st)) throw InputError(path, "", "no such file");
-  if (fs::is_directory(st)) throw InputError(path, "", "is a directory, not a file");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path, "", "cannot be opened for reading");
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  if (in.bad()) throw InputError(path, "", "read error");
-  const std::string text = ss.str();
-  return parse_json_text(text, path);
-}
+Json read_json_file(const std::string& path) { return parse_json_text(read_text_file(path), path); }
 
 void JsonReader::fail(const std::string& where, const std::string& problem) const {
   throw InputError(file_, where, problem);

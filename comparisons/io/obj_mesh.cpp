@@ -1,5 +1,7 @@
 #include "comparisons/io/obj_mesh.h"
 
+#include "comparisons/io/text_file.h"
+
 #include "comparisons/io/input_error.h"
 
 #include <cerrno>
@@ -103,17 +105,6 @@ ObjMesh parse_obj_text(const std::string& text, const std::string& file) {
   return mesh;
 }
 
-ObjMesh load_obj_mesh(const std::string& path) {
-  namespace fs = std::filesystem;
-  std::error_code ec;
-  const auto st = fs::status(path, ec);
-  if (ec || !fs::exists(st)) throw InputError(path, "", "no such file");
-  if (fs::is_directory(st)) throw InputError(path, "", "is a directory, not a file");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path, "", "cannot be opened for reading");
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  return parse_obj_text(ss.str(), path);
-}
+ObjMesh load_obj_mesh(const std::string& path) { return parse_obj_text(read_text_file(path), path); }
 
 }  // namespace tecido::io
