@@ -79,6 +79,9 @@ struct ClassicSoftBody::Impl {
 };
 
 ClassicSoftBody::Impl::Impl(const Scene& s, const ClassicSoftBodyOptions& o) : scene(s), options(o) {
+  // Self-collision is switched on when the scene asks for a self-collision response (Bullet's
+  // collider is a response; "none" in the scene means detection only), or by the options.
+  if (s.self_collision && s.self_collision->response != SelfCollisionResponse::None) options.self_collision = true;
   if (!(scene.dt > 0.0)) throw std::invalid_argument("ClassicSoftBody: scene.dt must be positive");
   if (!(options.klst > 0.0 && options.klst <= 1.0)) throw std::invalid_argument("ClassicSoftBody: klst must be in (0, 1]");
   if (options.piterations < 1) throw std::invalid_argument("ClassicSoftBody: piterations must be >= 1");

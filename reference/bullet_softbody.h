@@ -25,7 +25,8 @@ struct ClassicSoftBodyOptions {
   double klst = 1.0;
   int piterations = 10;  ///< position-solver sweeps per step, m_cfg.piterations (Bullet's default 1)
   double kdp = 0.0;      ///< velocity damping m_cfg.kDP in [0, 1]: v *= (1 - kDP) each step
-  /// Self-collision by Bullet's cluster collider (off by default; the scene has no key for it yet).
+  /// Self-collision by Bullet's cluster collider: on when this is set or when the scene's
+  /// self_collision key asks for a response other than "none"; off otherwise.
   /// In 3.24 the flags CL_SS | CL_SELF never reach the self-collision branch, so the adapter keeps
   /// CL_SS, generates clusters, and after each step runs btSoftColliders::CollideCL_SS on the body
   /// against itself; the contact joints it creates are solved during the next step.
