@@ -9,10 +9,10 @@ void accumulate_spring_forces(const std::vector<Spring>& springs, const std::vec
     const Vec3 d = x[s.j] - x[s.i];
     const double len = d.norm();
     if (!(len > 0.0)) continue;  // coincident ends: direction undefined, no force (eq. 10)
-    const Vec3 u = d / len;
+    const double inv_len = 1.0 / len;
     double mag = s.stiffness * (len - s.rest_length);
-    if (s.damping != 0.0) mag += s.damping * (v[s.j] - v[s.i]).dot(u);
-    const Vec3 fi = mag * u;
+    if (s.damping != 0.0) mag += s.damping * (v[s.j] - v[s.i]).dot(d) * inv_len;
+    const Vec3 fi = (mag * inv_len) * d;  // mag along u = d / |d|
     f[s.i] += fi;
     f[s.j] -= fi;
   }
