@@ -1,18 +1,23 @@
 // tecido experiment self-contact [--out DIR] [--threads N] [--quick] [--runs LIST] [--strength F]
 //                                [--scene FILE] [--seed-table FILE] [--elasticity-as stiffness|restitution]
+//                                [--shard i/n]
 // The seed's 72-run self-contact experiment (comparisons/suites/experiment_self_contact.h):
-// writes DIR/experiment.json and DIR/experiment.md.
+// writes DIR/experiment.json and DIR/experiment.md. With --shard i/n only the runs whose index
+// % n == i, and only DIR/experiment.json, marked as a shard; `tecido merge` joins the shards.
 #include "comparisons/cli/commands.h"
 #include "comparisons/io/atomic_file.h"
 #include "comparisons/io/input_error.h"
 #include "comparisons/suites/experiment_self_contact.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <iostream>
 #include <memory>
 #include <sstream>
 #include <thread>
+#include <tuple>
+#include <utility>
 
 namespace tecido::cli {
 
@@ -47,9 +52,26 @@ std::vector<int> parse_runs(const std::string& list) {
   return out;
 }
 
+/// "i/n" -> (i, n) with 0 <= i < n.
+std::pair<int, int> parse_shard(const std::string& text) {
+  const auto slash = text.find('/');
+  try {
+    if (slash == std::string::npos) throw std::invalid_argument(text);
+    const std::string a = text.substr(0, slash), b = text.substr(slash + 1);
+    std::size_t used = 0;
+    const int i = std::stoi(a, &used);
+    if (used != a.size()) throw std::invalid_argument(text);
+    const int n = std::stoi(b, &used);
+    if (used != b.size() || n < 1 || i < 0 || i >= n) throw std::invalid_argument(text);
+    return {i, n};
+  } catch (const std::exception&) {
+    throw io::UsageError("--shard: \"" + text + "\" is not i/n with 0 <= i < n");
+  }
+}
+
 Command add_experiment(CLI::App& app) {
   struct Opts {
-    std::string name, out = "out/self-contact", runs, scene, seed_table, elasticity_as = "stiffness";
+    std::string name, out = "out/self-contact", runs, scene, seed_table, elasticity_as = "stiffness", shard;
     int threads = 0;
     double strength = std::nan("");  // not given
     bool quick = false;
@@ -66,6 +88,7 @@ Command add_experiment(CLI::App& app) {
   sub->add_option("--strength", o->strength, "Response force per particle [N] (default: the scene's self_collision.strength)");
   sub->add_option("--elasticity-as", o->elasticity_as, "What the cloth's elasticity is: stiffness | restitution")
       ->capture_default_str();
+  sub->add_option("--shard", o->shard, "Only the runs whose index % n == i, e.g. 0/8; join the shards with `tecido merge`");
   return [o]() {
     if (o->name != "self-contact") throw io::UsageError("unknown experiment \"" + o->name + "\" (known: self-contact)");
     if (o->elasticity_as != "stiffness" && o->elasticity_as != "restitution")
@@ -84,16 +107,29 @@ Command add_experiment(CLI::App& app) {
       opt.strength = o->strength;
     }
     if (!o->runs.empty()) opt.runs = parse_runs(o->runs);
+    const bool sharded = !o->shard.empty();
+    if (sharded) {
+      std::tie(opt.shard_index, opt.shard_count) = parse_shard(o->shard);
+      std::vector<int> sorted = opt.runs;
+      std::sort(sorted.begin(), sorted.end());
+      if (std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end())
+        throw io::UsageError("--shard: --runs must not name a run twice");
+    }
+    opt.progress = true;
     const io::Json seed = io::read_json_file(opt.seed_table_path);
     const auto t0 = std::chrono::steady_clock::now();
     const auto results = suites::run_self_contact_experiment(opt);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    io::write_file_atomic(o->out + "/experiment.json", suites::self_contact_json(results, opt));
-    io::write_file_atomic(o->out + "/experiment.md", suites::self_contact_markdown(results, seed, opt));
+    if (sharded) {
+      io::write_file_atomic(o->out + "/experiment.json", suites::self_contact_shard_json(results, opt));
+    } else {
+      io::write_file_atomic(o->out + "/experiment.json", suites::self_contact_json(results, opt));
+      io::write_file_atomic(o->out + "/experiment.md", suites::self_contact_markdown(results, seed, opt));
+    }
     int unstable = 0;
     for (const auto& r : results) unstable += r.status != "ok";
     std::cout << "self-contact: " << results.size() << " runs in " << seconds << " s on " << opt.threads
-              << " threads; wrote " << o->out << "/experiment.json and experiment.md";
+              << " threads; wrote " << o->out << (sharded ? "/experiment.json (shard " + o->shard + ")" : "/experiment.json and experiment.md");
     if (unstable) std::cout << "; " << unstable << " runs went unstable";
     std::cout << "\n";
     return 0;

@@ -1,6 +1,7 @@
 #include "comparisons/suites/experiment_self_contact.h"
 
 #include "comparisons/io/input_error.h"
+#include "comparisons/io/progress.h"
 #include "comparisons/io/scene_json.h"
 #include "core/cloth/self_collision_response.h"
 #include "core/dynamics/simulation.h"
@@ -11,6 +12,7 @@
 #include <atomic>
 #include <cmath>
 #include <exception>
+#include <memory>
 #include <mutex>
 #include <thread>
 
@@ -111,7 +113,23 @@ SelfContactResult run_self_contact(const io::Json& base, const SelfContactRun& r
   return r;
 }
 
+std::vector<int> self_contact_selection(const SelfContactOptions& opt) {
+  const int count = static_cast<int>(self_contact_runs().size());
+  std::vector<int> out;
+  if (opt.runs.empty()) {
+    for (int i = 0; i < count; ++i) out.push_back(i);
+    return out;
+  }
+  for (int i : opt.runs) {
+    if (i < 0 || i >= count) throw io::UsageError("--runs: run index " + std::to_string(i) + " is outside 0..71");
+    out.push_back(i);
+  }
+  return out;
+}
+
 std::vector<SelfContactResult> run_self_contact_experiment(const SelfContactOptions& opt) {
+  if (opt.shard_count < 1 || opt.shard_index < 0 || opt.shard_index >= opt.shard_count)
+    throw io::UsageError("--shard: expected i/n with 0 <= i < n");
   const io::Json base = io::read_json_file(opt.scene_path);
   // Validate the base scene once, on the calling thread, so bad input is reported plainly.
   {
@@ -120,15 +138,10 @@ std::vector<SelfContactResult> run_self_contact_experiment(const SelfContactOpti
   }
   std::vector<SelfContactRun> runs;
   const auto all = self_contact_runs();
-  if (opt.runs.empty()) {
-    runs = all;
-  } else {
-    for (int i : opt.runs) {
-      if (i < 0 || i >= static_cast<int>(all.size()))
-        throw io::UsageError("--runs: run index " + std::to_string(i) + " is outside 0..71");
-      runs.push_back(all[i]);
-    }
-  }
+  for (int i : self_contact_selection(opt))
+    if (i % opt.shard_count == opt.shard_index) runs.push_back(all[i]);
+  std::unique_ptr<io::Progress> progress;
+  if (opt.progress) progress = std::make_unique<io::Progress>(runs.size(), "self-contact");
   std::vector<SelfContactResult> results(runs.size());
   std::atomic<std::size_t> next{0};
   std::exception_ptr error;
@@ -139,6 +152,7 @@ std::vector<SelfContactResult> run_self_contact_experiment(const SelfContactOpti
       if (k >= runs.size()) return;
       try {
         results[k] = run_self_contact(base, runs[k], opt);
+        if (progress) progress->tick();
       } catch (...) {
         std::lock_guard<std::mutex> lock(error_mutex);
         if (!error) error = std::current_exception();
@@ -150,11 +164,15 @@ std::vector<SelfContactResult> run_self_contact_experiment(const SelfContactOpti
   for (int t = 1; t < n; ++t) pool.emplace_back(worker);
   worker();
   for (auto& t : pool) t.join();
+  if (progress) progress->finish();
   if (error) std::rethrow_exception(error);
   return results;
 }
 
-std::string self_contact_json(const std::vector<SelfContactResult>& results, const SelfContactOptions& opt) {
+namespace {
+
+nlohmann::ordered_json self_contact_document(const std::vector<SelfContactResult>& results, const SelfContactOptions& opt,
+                                             nlohmann::ordered_json out) {
   nlohmann::ordered_json runs = nlohmann::ordered_json::array();
   for (const auto& r : results) {
     nlohmann::ordered_json j;
@@ -172,7 +190,6 @@ std::string self_contact_json(const std::vector<SelfContactResult>& results, con
     j["max_pairs"] = r.max_pairs;
     runs.push_back(std::move(j));
   }
-  nlohmann::ordered_json out;
   out["experiment"] = "self-contact";
   out["scene"] = opt.scene_path;
   out["simulated_time"] = opt.simulated_time;
@@ -180,7 +197,21 @@ std::string self_contact_json(const std::vector<SelfContactResult>& results, con
   out["elasticity_as"] = opt.elasticity_as;
   out["strength"] = opt.strength >= 0.0 ? nlohmann::ordered_json(opt.strength) : nlohmann::ordered_json("scene");
   out["runs"] = std::move(runs);
-  return out.dump(2) + "\n";
+  return out;
+}
+
+}  // namespace
+
+std::string self_contact_json(const std::vector<SelfContactResult>& results, const SelfContactOptions& opt) {
+  return self_contact_document(results, opt, nlohmann::ordered_json::object()).dump(2) + "\n";
+}
+
+std::string self_contact_shard_json(const std::vector<SelfContactResult>& results, const SelfContactOptions& opt) {
+  nlohmann::ordered_json head;
+  head["shard"] = {opt.shard_index, opt.shard_count};
+  head["selection"] = self_contact_selection(opt);
+  head["seed_table"] = opt.seed_table_path;
+  return self_contact_document(results, opt, std::move(head)).dump(2) + "\n";
 }
 
 namespace {

@@ -55,6 +55,9 @@ struct SelfContactOptions {
   std::vector<int> runs;        ///< run indices to do (empty = all 72)
   std::string elasticity_as = "stiffness";
   double strength = -1.0;       ///< response force [N]; < 0 = the scene's self_collision.strength
+  int shard_index = 0;          ///< --shard i/n: only the runs whose index % n == i
+  int shard_count = 1;
+  bool progress = false;        ///< a progress bar on stderr (only when it is a terminal)
 };
 
 /// The 72 runs in their fixed order: index = ((wind * 3 + step) * 2 + elasticity) * 4 + mode
@@ -69,7 +72,12 @@ io::Json self_contact_scene(const io::Json& base, const SelfContactRun& run, con
 /// Runs one simulation and counts its frames with self-contact.
 SelfContactResult run_self_contact(const io::Json& base, const SelfContactRun& run, const SelfContactOptions& opt);
 
-/// Runs the chosen runs on opt.threads threads; results in run-index order.
+/// The run indices chosen by opt.runs (all 72 when empty), in the order given, before
+/// sharding; throws io::UsageError on an index outside 0..71.
+std::vector<int> self_contact_selection(const SelfContactOptions& opt);
+
+/// Runs the chosen runs (of them, only this shard's: index % shard_count == shard_index) on
+/// opt.threads threads; results in the selection's order.
 std::vector<SelfContactResult> run_self_contact_experiment(const SelfContactOptions& opt);
 
 /// experiment.json: {"experiment":"self-contact", "scene", "simulated_time", "quick",
@@ -77,6 +85,11 @@ std::vector<SelfContactResult> run_self_contact_experiment(const SelfContactOpti
 /// "share","status","unstable_at_step","pairs","max_pairs"}]}. No wall time, no thread count:
 /// the file is bit-identical across thread counts.
 std::string self_contact_json(const std::vector<SelfContactResult>& results, const SelfContactOptions& opt);
+
+/// A shard's experiment.json (--shard i/n): {"shard":[i,n], "selection":[the unsharded run
+/// indices, in order], "seed_table", then the fields of self_contact_json with only this
+/// shard's runs}. `tecido merge` (comparisons/suites/merge.h) rebuilds the unsharded files.
+std::string self_contact_shard_json(const std::vector<SelfContactResult>& results, const SelfContactOptions& opt);
 
 /// experiment.md: tables 1-3's layout with our share beside the seed's, and the verdict on the
 /// seed's conclusions (needs the seed's tables document).
