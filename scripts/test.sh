@@ -13,3 +13,8 @@ if [ "${TECIDO_SKIP_ASAN:-0}" != "1" ]; then
   cmake --build --preset asan -j "$JOBS"
   ctest --preset asan -j "$JOBS"
 fi
+# Fuzzing (scripts/fuzz.sh: clang, libFuzzer + ASan + UBSan, about a minute) on CI, or when asked
+# for with TECIDO_FUZZ_SECONDS=N (seconds per target).
+if [ "${CI:-}" = "true" ] || [ -n "${TECIDO_FUZZ_SECONDS:-}" ]; then
+  bash scripts/fuzz.sh
+fi

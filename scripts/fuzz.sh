@@ -1,0 +1,55 @@
+#!/usr/bin/env bash
+# Builds the libFuzzer targets of fuzz/ (clang, -fsanitize=fuzzer,address,undefined) in
+# build-fuzz/ and runs each for SECONDS seconds (default 10; about a minute for all six).
+#   bash scripts/fuzz.sh [SECONDS] [TARGET...]      (or TECIDO_FUZZ_SECONDS=SECONDS)
+# Each target starts from a copy of its seed corpus data/fuzz/<target>/ (data/ is never
+# written) in build-fuzz/corpus/<target>/, which keeps what the fuzzer finds between runs.
+# A crash, leak, UBSan report, timeout or out-of-memory is saved under
+# build-fuzz/artifacts/<target>/ and makes the script exit 1 after running every target.
+# Reproduce one with: build-fuzz/bin/<target> build-fuzz/artifacts/<target>/crash-<sha1>
+set -euo pipefail
+cd "$(dirname "$0")/.."
+SECS=${1:-${TECIDO_FUZZ_SECONDS:-10}}
+[ $# -gt 0 ] && shift
+JOBS=${JOBS:-$(nproc)}
+BUILD=build-fuzz
+if ! command -v clang++ >/dev/null; then
+  echo "fuzz: clang++ not found (bash scripts/setup.sh installs clang and libclang-rt-14-dev)" >&2
+  exit 2
+fi
+GEN=()
+if [ ! -f "$BUILD/CMakeCache.txt" ] && command -v ninja >/dev/null; then GEN=(-G Ninja); fi
+CC=clang CXX=clang++ cmake -S . -B "$BUILD" "${GEN[@]}" -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+  -DTECIDO_FUZZ=ON -DTECIDO_BENCH=OFF -DBUILD_TESTING=OFF >/dev/null
+cmake --build "$BUILD" --target fuzz -j "$JOBS"
+if [ $# -gt 0 ]; then TARGETS=("$@"); else mapfile -t TARGETS < "$BUILD/fuzz_targets.txt"; fi
+
+export ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1:abort_on_error=1:allocator_may_return_null=1}
+export UBSAN_OPTIONS=${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}
+failed=()
+for t in "${TARGETS[@]}"; do
+  [ -n "$t" ] || continue
+  corpus="$BUILD/corpus/$t" artifacts="$BUILD/artifacts/$t"
+  mkdir -p "$corpus" "$artifacts"
+  cp -n data/fuzz/"$t"/* "$corpus"/ 2>/dev/null || true
+  dict=()
+  case "$t" in
+    fuzz_obj) dict=(-dict=data/fuzz/obj.dict) ;;
+    fuzz_tritri_vs_exact) ;;
+    *) dict=(-dict=data/fuzz/json.dict) ;;
+  esac
+  echo "fuzz: $t for ${SECS} s (corpus $corpus)" >&2
+  if "$BUILD/bin/$t" "$corpus" "${dict[@]}" -max_total_time="$SECS" -timeout=10 -rss_limit_mb=2048 \
+      -max_len=16384 -artifact_prefix="$artifacts/" -print_final_stats=1 >"$BUILD/artifacts/$t.log" 2>&1; then
+    grep -E '^stat::number_of_executed_units|^Done' "$BUILD/artifacts/$t.log" | tr '\n' ' ' >&2; echo >&2
+  else
+    echo "fuzz: $t FAILED; log $BUILD/artifacts/$t.log, input:" >&2
+    grep -E 'Test unit written to|FINDING|ERROR|SUMMARY' "$BUILD/artifacts/$t.log" | head -5 >&2
+    failed+=("$t")
+  fi
+done
+if [ ${#failed[@]} -gt 0 ]; then
+  echo "fuzz: findings in ${failed[*]}" >&2
+  exit 1
+fi
+echo "fuzz: no findings (${#TARGETS[@]} targets, ${SECS} s each)" >&2
