@@ -1,176 +1,297 @@
 #include "core/cloth/triangle_bvh.h"
 
 #include <algorithm>
+#include <cfloat>
+#include <cmath>
 #include <cstdint>
-#include <cstring>
+#include <limits>
+#include <numeric>
+
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 namespace tecido {
 
 namespace {
-/// The neighbour of a finite float toward -infinity / +infinity (std::nextafter, inlined).
-inline float step_down(float f) {
-  std::uint32_t b;
-  std::memcpy(&b, &f, 4);
-  if (f > 0.0f) {
-    --b;
-  } else if (f < 0.0f) {
-    ++b;
-  } else {
-    b = 0x80000001u;  // -smallest subnormal
-  }
-  std::memcpy(&f, &b, 4);
-  return f;
-}
-inline float step_up(float f) { return -step_down(-f); }
-/// The largest float <= d, and the smallest float >= d (outward rounding of box bounds).
-/// A finite double beyond the float range becomes +-infinity, still outward.
+
+// Outward rounding of a double to float without branches. (float)d is within half an ulp of
+// d; moving it away by |f| 2^-23 + 2^-126 (at least one ulp of f, and at least the smallest
+// normal float) gives a float on the far side of d, whatever the rounding of the subtraction
+// itself (the exact result lies at least one ulp beyond f, and f +- ulp is representable).
+// Everything is clamped to [-FLT_MAX, FLT_MAX]: clamping is monotone, so two intervals that
+// overlap still overlap after it, the boxes stay finite, and the empty lanes' inverted
+// infinite boxes (lo = +inf, hi = -inf) can never overlap one.
+constexpr double kFloatMax = FLT_MAX;
 inline float float_down(double d) {
-  const float f = static_cast<float>(d);
-  return static_cast<double>(f) > d ? step_down(f) : f;
+  const float f = static_cast<float>(std::min(std::max(d, -kFloatMax), kFloatMax));
+  return std::max(f - (std::fabs(f) * 0x1p-23f + FLT_MIN), -FLT_MAX);
 }
 inline float float_up(double d) {
-  const float f = static_cast<float>(d);
-  return static_cast<double>(f) < d ? step_up(f) : f;
+  const float f = static_cast<float>(std::min(std::max(d, -kFloatMax), kFloatMax));
+  return std::min(f + (std::fabs(f) * 0x1p-23f + FLT_MIN), FLT_MAX);
 }
+
+constexpr float kInf = std::numeric_limits<float>::infinity();
+
+/// In a 4 x 4 lane mask (bit 4k + l: lane k of one node, lane l of the other), the bits with
+/// k < l: a node paired with itself visits each pair of distinct lanes once.
+constexpr unsigned kLaterLanes = 0x08CEu;  // bits 1, 2, 3, 6, 7, 11
+static_assert(TriangleBvh::kWidth == 4, "kLaterLanes and the SSE paths assume four lanes");
+
+/// Index of the lowest set bit of a nonzero mask.
+inline int lowest_bit(unsigned m) { return __builtin_ctz(m); }
+
 }  // namespace
 
 void TriangleBvh::build(const std::vector<Vec3>& x, const std::vector<std::array<int, 3>>& triangles) {
   const int n = static_cast<int>(triangles.size());
-  slot_tri_.resize(n);
-  slot_v_.resize(n);
-  slot_box_.resize(n);
+  tri_count_ = triangles.size();
   nodes_.clear();
+  node_box_.clear();
+  leaf_v_.clear();
+  stack_bound_ = 1;
+  if (n == 0) return;
   std::vector<Vec3> centroid(n);
   for (int k = 0; k < n; ++k) {
-    slot_tri_[k] = k;
     const auto& t = triangles[k];
     centroid[k] = (x[t[0]] + x[t[1]] + x[t[2]]) / 3.0;
   }
-  if (n == 0) return;
-  nodes_.reserve(4 * static_cast<std::size_t>(n) / kLeafSize + 1);
-  nodes_.push_back(Node{});
-  build_node(0, 0, n, centroid);
-  for (int k = 0; k < n; ++k) slot_v_[k] = triangles[slot_tri_[k]];
+  std::vector<int> order(n);
+  std::iota(order.begin(), order.end(), 0);
+  nodes_.reserve(static_cast<std::size_t>(n) / 2 + 1);
+  nodes_.emplace_back();
+  leaf_v_.emplace_back();
+  const int depth = build_node(0, 0, n, centroid, order, triangles);
+  node_box_.resize(nodes_.size());
+  // A pop removes one pair and pushes at most kWidth^2; pairs deeper down the tree of node
+  // pairs come later, and its paths are at most 2 * depth + 1 long.
+  stack_bound_ = static_cast<std::size_t>(kWidth * kWidth) * (2 * static_cast<std::size_t>(depth) + 2) + 1;
   refit(x);
 }
 
-int TriangleBvh::build_node(int node, int begin, int end, const std::vector<Vec3>& centroid) {
-  if (end - begin <= kLeafSize) {
-    nodes_[node].first = begin;
-    nodes_[node].count = end - begin;
-    return node;
+int TriangleBvh::build_node(int node, int begin, int end, const std::vector<Vec3>& centroid, std::vector<int>& order,
+                            const std::vector<std::array<int, 3>>& triangles) {
+  const int count = end - begin;
+  if (count <= kWidth) {
+    Node& nd = nodes_[node];
+    LeafVerts& lv = leaf_v_[node];
+    nd.leaf = 1;
+    nd.count = count;
+    for (int k = 0; k < kWidth; ++k) {
+      const bool used = k < count;
+      nd.child[k] = used ? order[begin + k] : -1;
+      for (int d = 0; d < 3; ++d) {
+        lv.v[d][k] = used ? triangles[order[begin + k]][d] : -1 - d;
+        nd.lo[d][k] = kInf;
+        nd.hi[d][k] = -kInf;
+      }
+    }
+    return 0;
   }
-  Vec3 lo = centroid[slot_tri_[begin]], hi = lo;
-  for (int k = begin + 1; k < end; ++k) {
-    lo = lo.cwiseMin(centroid[slot_tri_[k]]);
-    hi = hi.cwiseMax(centroid[slot_tri_[k]]);
+  // Median split of [b, e) along the longest axis of the centroids' bounds, at a multiple of
+  // kWidth from b when possible so that leaves come out full. Strict total order (coordinate,
+  // then triangle id): the split does not depend on the library's choice among equal keys.
+  auto split = [&](int b, int e) {
+    Vec3 lo = centroid[order[b]], hi = lo;
+    for (int k = b + 1; k < e; ++k) {
+      lo = lo.cwiseMin(centroid[order[k]]);
+      hi = hi.cwiseMax(centroid[order[k]]);
+    }
+    int axis = 0;
+    const Vec3 ext = hi - lo;
+    if (ext[1] > ext[axis]) axis = 1;
+    if (ext[2] > ext[axis]) axis = 2;
+    const int half = (e - b + 1) / 2;
+    const int mid = b + std::min(e - b - 1, (half + kWidth - 1) / kWidth * kWidth);
+    std::nth_element(order.begin() + b, order.begin() + mid, order.begin() + e, [&](int p, int q) {
+      const double cp = centroid[p][axis], cq = centroid[q][axis];
+      return cp < cq || (cp == cq && p < q);
+    });
+    return mid;
+  };
+  // Two levels of binary splits give up to four groups; a half that fits in a leaf stays whole.
+  int bounds[kWidth + 1];
+  int groups = 0;
+  const int mid = split(begin, end);
+  for (const auto& [b, e] : {std::array<int, 2>{begin, mid}, std::array<int, 2>{mid, end}}) {
+    bounds[groups++] = b;
+    if (e - b > kWidth) bounds[groups++] = split(b, e);
   }
-  int axis = 0;
-  const Vec3 ext = hi - lo;
-  if (ext[1] > ext[axis]) axis = 1;
-  if (ext[2] > ext[axis]) axis = 2;
-  const int mid = begin + (end - begin) / 2;
-  // Strict total order (coordinate, then triangle id): the split does not depend on the
-  // standard library's choice among equal keys.
-  std::nth_element(slot_tri_.begin() + begin, slot_tri_.begin() + mid, slot_tri_.begin() + end, [&](int a, int b) {
-    const double ca = centroid[a][axis], cb = centroid[b][axis];
-    return ca < cb || (ca == cb && a < b);
-  });
-  const int left = static_cast<int>(nodes_.size());
-  nodes_.push_back(Node{});
-  nodes_.push_back(Node{});
-  nodes_[node].first = left;
-  nodes_[node].count = 0;
-  build_node(left, begin, mid, centroid);
-  build_node(left + 1, mid, end, centroid);
-  return node;
+  bounds[groups] = end;
+  const int first = static_cast<int>(nodes_.size());
+  for (int g = 0; g < groups; ++g) {
+    nodes_.emplace_back();
+    leaf_v_.emplace_back();
+  }
+  {
+    Node& nd = nodes_[node];
+    nd.leaf = 0;
+    nd.count = groups;
+    for (int k = 0; k < kWidth; ++k) {
+      nd.child[k] = k < groups ? first + k : -1;
+      for (int d = 0; d < 3; ++d) {
+        nd.lo[d][k] = kInf;
+        nd.hi[d][k] = -kInf;
+        leaf_v_[node].v[d][k] = -1 - d;
+      }
+    }
+  }
+  int depth = 0;
+  for (int g = 0; g < groups; ++g)
+    depth = std::max(depth, build_node(first + g, bounds[g], bounds[g + 1], centroid, order, triangles));
+  return depth + 1;
 }
 
 void TriangleBvh::refit(const std::vector<Vec3>& x) {
-  const std::size_t n = slot_v_.size();
-  for (std::size_t s = 0; s < n; ++s) {
-    const Vec3& a = x[slot_v_[s][0]];
-    const Vec3& b = x[slot_v_[s][1]];
-    const Vec3& c = x[slot_v_[s][2]];
-    Box& box = slot_box_[s];
+  if (nodes_.empty()) return;
+  const std::size_t nv = x.size();
+  vlo_.resize(nv);
+  vhi_.resize(nv);
+  for (std::size_t v = 0; v < nv; ++v) {
     for (int d = 0; d < 3; ++d) {
-      box.lo[d] = float_down(std::min(a[d], std::min(b[d], c[d])));
-      box.hi[d] = float_up(std::max(a[d], std::max(b[d], c[d])));
+      vlo_[v][d] = float_down(x[v][d]);
+      vhi_[v][d] = float_up(x[v][d]);
     }
+    vlo_[v][3] = vhi_[v][3] = 0.0f;
   }
   // Children always have larger indices than their parent: one reverse sweep suffices.
   for (std::size_t k = nodes_.size(); k-- > 0;) {
-    Node& node = nodes_[k];
-    Box box;
-    if (node.count > 0) {
-      box = slot_box_[node.first];
-      for (int s = node.first + 1; s < node.first + node.count; ++s) {
+    Node& nd = nodes_[k];
+    if (nd.leaf) {
+      const LeafVerts& lv = leaf_v_[k];
+      for (int lane = 0; lane < nd.count; ++lane) {
+        const auto& a = vlo_[lv.v[0][lane]];
+        const auto& b = vlo_[lv.v[1][lane]];
+        const auto& c = vlo_[lv.v[2][lane]];
+        const auto& A = vhi_[lv.v[0][lane]];
+        const auto& B = vhi_[lv.v[1][lane]];
+        const auto& C = vhi_[lv.v[2][lane]];
         for (int d = 0; d < 3; ++d) {
-          box.lo[d] = std::min(box.lo[d], slot_box_[s].lo[d]);
-          box.hi[d] = std::max(box.hi[d], slot_box_[s].hi[d]);
+          nd.lo[d][lane] = std::min(a[d], std::min(b[d], c[d]));
+          nd.hi[d][lane] = std::max(A[d], std::max(B[d], C[d]));
         }
       }
     } else {
-      const Box& l = nodes_[node.first].box;
-      const Box& r = nodes_[node.first + 1].box;
-      for (int d = 0; d < 3; ++d) {
-        box.lo[d] = std::min(l.lo[d], r.lo[d]);
-        box.hi[d] = std::max(l.hi[d], r.hi[d]);
+      for (int lane = 0; lane < nd.count; ++lane) {
+        const Box& cb = node_box_[nd.child[lane]];
+        for (int d = 0; d < 3; ++d) {
+          nd.lo[d][lane] = cb.lo[d];
+          nd.hi[d][lane] = cb.hi[d];
+        }
       }
     }
-    node.box = box;
+    Box& box = node_box_[k];
+    for (int d = 0; d < 3; ++d) {
+      box.lo[d] = std::min(std::min(nd.lo[d][0], nd.lo[d][1]), std::min(nd.lo[d][2], nd.lo[d][3]));
+      box.hi[d] = std::max(std::max(nd.hi[d][0], nd.hi[d][1]), std::max(nd.hi[d][2], nd.hi[d][3]));
+    }
+  }
+}
+
+unsigned TriangleBvh::lanes_overlapping(const Node& b, const float lo[3], const float hi[3]) {
+#if defined(__SSE2__)
+  __m128 m = _mm_and_ps(_mm_cmple_ps(_mm_loadu_ps(b.lo[0]), _mm_set1_ps(hi[0])),
+                        _mm_cmple_ps(_mm_set1_ps(lo[0]), _mm_loadu_ps(b.hi[0])));
+  m = _mm_and_ps(m, _mm_cmple_ps(_mm_loadu_ps(b.lo[1]), _mm_set1_ps(hi[1])));
+  m = _mm_and_ps(m, _mm_cmple_ps(_mm_set1_ps(lo[1]), _mm_loadu_ps(b.hi[1])));
+  m = _mm_and_ps(m, _mm_cmple_ps(_mm_loadu_ps(b.lo[2]), _mm_set1_ps(hi[2])));
+  m = _mm_and_ps(m, _mm_cmple_ps(_mm_set1_ps(lo[2]), _mm_loadu_ps(b.hi[2])));
+  return static_cast<unsigned>(_mm_movemask_ps(m));
+#else
+  unsigned m = 0;
+  for (int k = 0; k < kWidth; ++k) {
+    const bool o = (b.lo[0][k] <= hi[0]) & (lo[0] <= b.hi[0][k]) & (b.lo[1][k] <= hi[1]) & (lo[1] <= b.hi[1][k]) &
+                   (b.lo[2][k] <= hi[2]) & (lo[2] <= b.hi[2][k]);
+    m |= static_cast<unsigned>(o) << k;
+  }
+  return m;
+#endif
+}
+
+unsigned TriangleBvh::lanes_sharing(const LeafVerts& b, int v0, int v1, int v2) {
+#if defined(__SSE2__)
+  const __m128i l0 = _mm_loadu_si128(reinterpret_cast<const __m128i*>(b.v[0]));
+  const __m128i l1 = _mm_loadu_si128(reinterpret_cast<const __m128i*>(b.v[1]));
+  const __m128i l2 = _mm_loadu_si128(reinterpret_cast<const __m128i*>(b.v[2]));
+  __m128i s = _mm_setzero_si128();
+  for (int v : {v0, v1, v2}) {
+    const __m128i q = _mm_set1_epi32(v);
+    s = _mm_or_si128(s, _mm_or_si128(_mm_cmpeq_epi32(q, l0), _mm_or_si128(_mm_cmpeq_epi32(q, l1), _mm_cmpeq_epi32(q, l2))));
+  }
+  return static_cast<unsigned>(_mm_movemask_ps(_mm_castsi128_ps(s)));
+#else
+  unsigned m = 0;
+  for (int k = 0; k < kWidth; ++k) {
+    const int a = b.v[0][k], c = b.v[1][k], e = b.v[2][k];
+    const bool s = (v0 == a) | (v0 == c) | (v0 == e) | (v1 == a) | (v1 == c) | (v1 == e) | (v2 == a) | (v2 == c) |
+                   (v2 == e);
+    m |= static_cast<unsigned>(s) << k;
+  }
+  return m;
+#endif
+}
+
+inline void TriangleBvh::leaf_pairs(int a, int b, std::vector<std::array<int, 2>>& out) const {
+  const Node& na = nodes_[a];
+  const Node& nb = nodes_[b];
+  const LeafVerts& la = leaf_v_[a];
+  const LeafVerts& lb = leaf_v_[b];
+  // A 16-bit mask, bit 4k + l for lane k of a and lane l of b, built without branches; then
+  // one loop over its (few) set bits. Unused lanes have empty boxes and never overlap.
+  unsigned mask = 0;
+  for (int k = 0; k < kWidth; ++k) {
+    const float lo[3] = {na.lo[0][k], na.lo[1][k], na.lo[2][k]};
+    const float hi[3] = {na.hi[0][k], na.hi[1][k], na.hi[2][k]};
+    const unsigned m = lanes_overlapping(nb, lo, hi) & ~lanes_sharing(lb, la.v[0][k], la.v[1][k], la.v[2][k]);
+    mask |= m << (kWidth * k);
+  }
+  if (a == b) mask &= kLaterLanes;
+  for (; mask; mask &= mask - 1) {
+    const int bit = lowest_bit(mask);
+    const int i = na.child[bit / kWidth], j = nb.child[bit % kWidth];
+    out.push_back({std::min(i, j), std::max(i, j)});
   }
 }
 
 void TriangleBvh::overlapping_pairs(std::vector<std::array<int, 2>>& out) {
   if (nodes_.empty()) return;
-  stack_.clear();
-  stack_.push_back({0, 0});
-  while (!stack_.empty()) {
-    const auto [a, b] = stack_.back();
-    stack_.pop_back();
+  stack_.resize(stack_bound_);
+  std::array<int, 2>* stack = stack_.data();
+  std::size_t top = 0;
+  stack[top++] = {0, 0};
+  while (top > 0) {
+    const auto [a, b] = stack[--top];
     const Node& na = nodes_[a];
-    if (a == b) {
-      if (na.count > 0) {
-        const int end = na.first + na.count;
-        for (int s = na.first; s < end; ++s)
-          for (int t = s + 1; t < end; ++t)
-            if (overlap(slot_box_[s], slot_box_[t]) && !share_vertex(s, t)) emit(s, t, out);
-      } else {
-        if (overlap(nodes_[na.first].box, nodes_[na.first + 1].box)) stack_.push_back({na.first, na.first + 1});
-        stack_.push_back({na.first + 1, na.first + 1});
-        stack_.push_back({na.first, na.first});
-      }
-      continue;
-    }
-    // Pairs of distinct nodes are pushed only when their boxes overlap.
     const Node& nb = nodes_[b];
-    if (na.count > 0 && nb.count > 0) {
-      const int ea = na.first + na.count, eb = nb.first + nb.count;
-      for (int s = na.first; s < ea; ++s) {
-        const Box& bs = slot_box_[s];
-        if (!overlap(bs, nb.box)) continue;
-        for (int t = nb.first; t < eb; ++t)
-          if (overlap(bs, slot_box_[t]) && !share_vertex(s, t)) emit(s, t, out);
-      }
+    if (na.leaf & nb.leaf) {
+      leaf_pairs(a, b, out);
       continue;
     }
-    // Descend the internal node with the larger box (by the sum of its extents).
-    bool split_a = nb.count > 0;
-    if (na.count == 0 && nb.count == 0) {
-      float ea = 0.0f, eb = 0.0f;
-      for (int d = 0; d < 3; ++d) {
-        ea += na.box.hi[d] - na.box.lo[d];
-        eb += nb.box.hi[d] - nb.box.lo[d];
+    if (na.leaf == nb.leaf) {
+      // Two internal nodes, or one with itself: every overlapping pair of children, each
+      // child with itself for a node with itself. The 4 x 4 mask is built without branches.
+      unsigned mask = 0;
+      for (int k = 0; k < kWidth; ++k) {
+        const float lo[3] = {na.lo[0][k], na.lo[1][k], na.lo[2][k]};
+        const float hi[3] = {na.hi[0][k], na.hi[1][k], na.hi[2][k]};
+        mask |= lanes_overlapping(nb, lo, hi) << (kWidth * k);
       }
-      split_a = ea >= eb;
-    }
-    if (split_a) {
-      if (overlap(nodes_[na.first + 1].box, nb.box)) stack_.push_back({na.first + 1, b});
-      if (overlap(nodes_[na.first].box, nb.box)) stack_.push_back({na.first, b});
+      if (a == b) {
+        mask &= kLaterLanes;
+        for (int k = 0; k < na.count; ++k) stack[top++] = {na.child[k], na.child[k]};
+      }
+      for (; mask; mask &= mask - 1) {
+        const int bit = lowest_bit(mask);
+        stack[top++] = {na.child[bit / kWidth], nb.child[bit % kWidth]};
+      }
+    } else if (na.leaf) {
+      // A leaf against an internal node: descend the internal one.
+      for (unsigned m = lanes_overlapping(nb, node_box_[a].lo, node_box_[a].hi); m; m &= m - 1)
+        stack[top++] = {a, nb.child[lowest_bit(m)]};
     } else {
-      if (overlap(na.box, nodes_[nb.first + 1].box)) stack_.push_back({a, nb.first + 1});
-      if (overlap(na.box, nodes_[nb.first].box)) stack_.push_back({a, nb.first});
+      for (unsigned m = lanes_overlapping(na, node_box_[b].lo, node_box_[b].hi); m; m &= m - 1)
+        stack[top++] = {na.child[lowest_bit(m)], b};
     }
   }
 }

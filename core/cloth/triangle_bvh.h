@@ -2,15 +2,23 @@
 /// Bounding-volume hierarchy of axis-aligned boxes over the triangles of one mesh, built once
 /// and refitted every frame: the broad phase of cloth self-collision.
 ///
-/// Method: top-down median split of triangle centroids along the longest axis of their bounds
-/// (at build time only), leaves of at most kLeafSize triangles; each frame the boxes are
-/// recomputed bottom-up ("refit", van den Bergen 1997, "Efficient collision detection of
-/// complex deformable models using AABB trees", J. Graphics Tools 2(4)). A cloth keeps its
-/// topology, so a tree built on the rest shape groups mesh patches and stays useful as the
-/// cloth deforms. The self-query descends the tree against itself (node with itself: its two
-/// children with themselves and with each other), the scheme of Box2D v3's dynamic_tree and
-/// of most cloth codes. State lives in flat arrays (nodes, slot boxes, slot vertex ids); a query
-/// allocates nothing once its buffers have grown.
+/// Method: a 4-ary tree (each node holds the boxes of its up to four children side by side,
+/// "structure of arrays", so one box is tested against all four with a handful of vector
+/// compares; Wald et al. 2008, "Getting rid of packets", and Embree's BVH4). It is built top
+/// down by two median splits of triangle centroids along the longest axis of their bounds (at
+/// build time only); a leaf holds up to four triangles. Each frame the boxes are recomputed
+/// bottom-up ("refit", van den Bergen 1997, "Efficient collision detection of complex
+/// deformable models using AABB trees", J. Graphics Tools 2(4)). A cloth keeps its topology, so
+/// a tree built on the rest shape groups mesh patches and stays useful as the cloth deforms.
+/// The self-query descends the tree against itself (a node with itself: each child with itself
+/// and every two overlapping children with each other; two distinct nodes: every overlapping
+/// pair of their children), as in Box2D v3's dynamic_tree and most cloth codes, branch-free
+/// where the outcome is a coin toss. State lives in flat arrays; a query allocates nothing once
+/// its buffers have grown.
+///
+/// Boxes are stored in single precision, rounded outward (each vertex's coordinates widened by
+/// at least one float ulp), so they contain the double-precision boxes: the broad phase stays
+/// conservative, the exact narrow phase decides, and the memory traffic halves.
 #include "core/geometry/types.h"
 
 #include <array>
@@ -21,13 +29,13 @@ namespace tecido {
 
 class TriangleBvh {
  public:
-  static constexpr int kLeafSize = 2;
+  static constexpr int kWidth = 4;  ///< children per node, triangles per leaf
 
   /// Builds the tree for `triangles` (indices into x) from the positions x. Empty meshes are
   /// allowed. The tree's shape is fixed until the next build; refit() follows the motion.
   void build(const std::vector<Vec3>& x, const std::vector<std::array<int, 3>>& triangles);
 
-  /// Recomputes every box from positions x (same vertex array the triangles index).
+  /// Recomputes every box from positions x (same vertex array the triangles index; finite).
   void refit(const std::vector<Vec3>& x);
 
   /// Appends to `out` every pair (i, j) of triangle ids, i < j, whose closed boxes overlap
@@ -35,43 +43,44 @@ class TriangleBvh {
   /// (traversal) order. Uses the boxes of the last build()/refit().
   void overlapping_pairs(std::vector<std::array<int, 2>>& out);
 
-  std::size_t triangle_count() const { return slot_tri_.size(); }
+  std::size_t triangle_count() const { return tri_count_; }
   std::size_t node_count() const { return nodes_.size(); }
 
  private:
-  /// Boxes are stored in single precision, rounded outward (lo down, hi up), so they
-  /// contain the double-precision box: the broad phase stays conservative, the exact narrow
-  /// phase decides, and the memory traffic of the traversal halves.
+  /// A node: the boxes of its children (lanes), lane k empty (lo = +inf, hi = -inf) when k >= count.
+  struct Node {
+    float lo[3][kWidth], hi[3][kWidth];
+    int child[kWidth];  ///< internal: child node indices; leaf: triangle ids
+    int count = 0;      ///< lanes in use, 1..kWidth
+    int leaf = 0;       ///< 1 when the lanes are triangles
+  };
+  /// A node's own box (the union of its lanes), kept for pairs of a leaf with an internal node.
   struct Box {
     float lo[3], hi[3];
   };
-  struct Node {
-    Box box;
-    int first = 0;  ///< leaf: first slot; internal: index of the left child (right = first + 1)
-    int count = 0;  ///< leaf: number of slots (> 0); internal: 0
-  };  // 32 bytes
-  int build_node(int node, int begin, int end, const std::vector<Vec3>& centroid);
-  static bool overlap(const Box& a, const Box& b) {
-    // Non-short-circuit: the outcome is hard to predict, branches cost more than the compares.
-    return (a.lo[0] <= b.hi[0]) & (b.lo[0] <= a.hi[0]) & (a.lo[1] <= b.hi[1]) & (b.lo[1] <= a.hi[1]) &
-           (a.lo[2] <= b.hi[2]) & (b.lo[2] <= a.hi[2]);
-  }
-  bool share_vertex(int s, int t) const {
-    const auto& a = slot_v_[s];
-    const auto& b = slot_v_[t];
-    return a[0] == b[0] || a[0] == b[1] || a[0] == b[2] || a[1] == b[0] || a[1] == b[1] || a[1] == b[2] ||
-           a[2] == b[0] || a[2] == b[1] || a[2] == b[2];
-  }
-  void emit(int s, int t, std::vector<std::array<int, 2>>& out) const {
-    const int i = slot_tri_[s], j = slot_tri_[t];
-    out.push_back(i < j ? std::array<int, 2>{i, j} : std::array<int, 2>{j, i});
-  }
+  /// The vertex ids of a leaf's triangles, lane by lane (unused lanes: -1, -2, -3).
+  struct LeafVerts {
+    int v[3][kWidth];
+  };
 
-  std::vector<Node> nodes_;
-  std::vector<int> slot_tri_;               ///< triangle id stored in each slot (leaf order)
-  std::vector<std::array<int, 3>> slot_v_;  ///< its vertex ids
-  std::vector<Box> slot_box_;               ///< its box
-  std::vector<std::array<int, 2>> stack_;   ///< node pairs still to visit
+  int build_node(int node, int begin, int end, const std::vector<Vec3>& centroid, std::vector<int>& order,
+                 const std::vector<std::array<int, 3>>& triangles);
+  /// Appends the triangle pairs of leaves a and b (a == b: the leaf with itself).
+  void leaf_pairs(int a, int b, std::vector<std::array<int, 2>>& out) const;
+  /// Bit k set when lane k of node b overlaps box (lo, hi).
+  static unsigned lanes_overlapping(const Node& b, const float lo[3], const float hi[3]);
+  /// Bit k set when triangle (v0, v1, v2) shares a vertex with lane k's triangle of leaf b.
+  static unsigned lanes_sharing(const LeafVerts& b, int v0, int v1, int v2);
+
+  std::size_t tri_count_ = 0;
+  std::vector<Node> nodes_;          ///< nodes_[0] is the root; children after their parent
+  std::vector<Box> node_box_;        ///< each node's own box
+  std::vector<LeafVerts> leaf_v_;    ///< per node; meaningful for leaves
+  std::vector<std::array<float, 4>> vlo_, vhi_;  ///< per-vertex outward float bounds
+  std::vector<std::array<int, 2>> stack_;        ///< node pairs still to visit
+  /// Bound on the stack's size: a pop pushes at most kWidth^2 pairs minus the one it removed,
+  /// and a path down the tree of node pairs is at most 2 * depth + 1 long.
+  std::size_t stack_bound_ = 1;
 };
 
 }  // namespace tecido

@@ -66,9 +66,11 @@ inline constexpr double kOrient2dErrBoundA = (3.0 + 16.0 * kUnitRoundoff) * kUni
 inline constexpr double kOrient3dErrBoundA = (7.0 + 56.0 * kUnitRoundoff) * kUnitRoundoff;
 /// Shewchuk's bounds assume no underflow. A product that underflows is off by at most 2^-1075
 /// in absolute terms; orient2d adds this pad to its bound, orient3d, which multiplies its
-/// first-level products by a z difference, adds it times (sum |dz| + 2). Wide margins; far
-/// below any determinant of non-degenerate inputs, so it costs no filter efficiency.
-inline constexpr double kUnderflowPad = 0x1p-1060;
+/// first-level products by a z difference, adds it times (sum |dz| + 2). 2^-1000 is far more
+/// than those errors need and far below any determinant of non-degenerate inputs, so it costs
+/// no filter efficiency; it is a normal number on purpose: a subnormal pad (or a subnormal
+/// product with one) would make every filter evaluation take the CPU's slow subnormal path.
+inline constexpr double kUnderflowPad = 0x1p-1000;
 
 }  // namespace detail
 

@@ -19,13 +19,15 @@ inline int gd_bracket(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d
 // per triangle. (x-t0).n has exactly the shape of Shewchuk's orient3d filter (nine rounded
 // differences, six products, ...), so his bound A * permanent holds barring underflow.
 // Underflow: each product is then off by at most 2^-1075 more; the three w_i n_i products are
-// covered by kUnderflowPad, the products inside n_i (multiplied by |w_i|) by padding each
-// coefficient with 2^-1000 and A by 2^-100: when the pad survives the addition (coefficient
-// < 2^-947) it adds at least A 2^-1001 |w_i|; when it is absorbed, 2^-100 * 2^-947 |w_i| does;
-// both far above 2 * 2^-1075 |w_i|. The three filters run without branches; a point the
-// filter cannot decide goes to the exact predicate.
+// covered by kUnderflowPad (2^-1000), the products inside n_i (multiplied by |w_i|) by padding
+// each coefficient with 2^-900 and A by 2^-100: when the pad survives the addition (coefficient
+// < 2^-847) it adds at least A 2^-901 |w_i|; when it is absorbed, 2^-100 * 2^-847 |w_i| does;
+// both far above 2 * 2^-1075 |w_i|. The pads are large enough that no intermediate of a flat
+// (axis-aligned) configuration is subnormal: subnormal arithmetic is slow on most CPUs. The
+// three filters run without branches; a point the filter cannot decide goes to the exact
+// predicate.
 void plane_sides(const Triangle& t, const Triangle& x, int s[3]) {
-  constexpr double kCoefPad = 0x1p-1000;
+  constexpr double kCoefPad = 0x1p-900;
   constexpr double kErrBound = detail::kOrient3dErrBoundA + 0x1p-100;
   const double ux = t[1][0] - t[0][0], uy = t[1][1] - t[0][1], uz = t[1][2] - t[0][2];
   const double vx = t[2][0] - t[0][0], vy = t[2][1] - t[0][1], vz = t[2][2] - t[0][2];
@@ -162,15 +164,28 @@ bool segment_triangle_2d(const P2& a, const P2& b, const P2 (&t)[3]) {
 }
 
 /// Coplanar non-degenerate triangles, k an axis along which their common normal is nonzero.
+/// Separating-axis theorem in the plane: two closed triangles are disjoint iff the three
+/// vertices of one lie strictly outside the line of some edge of the other (disjoint compact
+/// convex sets are strictly separated by a line parallel to an edge of one of them, and that
+/// edge's own line then separates too). Every side is an exact orient2d sign, so the answer is
+/// exact; no intersection point is constructed.
 bool coplanar_triangles(const Triangle& p, const Triangle& q, int k) {
   const P2 a[3] = {project(p[0], k), project(p[1], k), project(p[2], k)};
   const P2 b[3] = {project(q[0], k), project(q[1], k), project(q[2], k)};
-  if (point_in_triangle_2d(a[0], b[0], b[1], b[2])) return true;
-  if (point_in_triangle_2d(b[0], a[0], a[1], a[2])) return true;
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j)
-      if (segments_meet_2d(a[i], a[(i + 1) % 3], b[j], b[(j + 1) % 3])) return true;
-  return false;
+  // Both are non-degenerate in this projection (their normals are parallel, component k != 0).
+  const int oa = orient2(a[0], a[1], a[2]);
+  const int ob = orient2(b[0], b[1], b[2]);
+  auto separated_by_edge_of = [](const P2 (&t)[3], int orientation, const P2 (&u)[3]) {
+    for (int i = 0; i < 3; ++i) {
+      const P2& e0 = t[i];
+      const P2& e1 = t[(i + 1) % 3];
+      if (orient2(e0, e1, u[0]) == -orientation && orient2(e0, e1, u[1]) == -orientation &&
+          orient2(e0, e1, u[2]) == -orientation)
+        return true;
+    }
+    return false;
+  };
+  return !separated_by_edge_of(a, oa, b) && !separated_by_edge_of(b, ob, a);
 }
 
 /// What a closed triangle covers: itself, a segment (collinear vertices) or a point.
@@ -305,6 +320,8 @@ bool tri_tri_intersect(const Triangle& p, const Triangle& q) {
   plane_sides(q, p, sp);
   const int sum_p = sp[0] + sp[1] + sp[2];
   if (sum_p == 3 || sum_p == -3) return false;  // all three strictly on one side
+  // All of p on q's plane: a coplanar pair or a degenerate q (or p); step 3 below.
+  if ((sp[0] | sp[1] | sp[2]) == 0) return coplanar_or_degenerate(p, q);
   // 2. The same for q against p's plane.
   int sq[3];
   plane_sides(p, q, sq);
@@ -312,7 +329,7 @@ bool tri_tri_intersect(const Triangle& p, const Triangle& q) {
   if (sum_q == 3 || sum_q == -3) return false;
   // 3. A triangle entirely on the other's plane: coplanar pair or a degenerate triangle.
   //    Otherwise some side is nonzero on each triangle, which certifies both non-degenerate.
-  if ((sp[0] | sp[1] | sp[2]) == 0 || (sq[0] | sq[1] | sq[2]) == 0) {
+  if ((sq[0] | sq[1] | sq[2]) == 0) {
     return coplanar_or_degenerate(p, q);
   }
   // 4. Canonical form (Guigue & Devillers, section 3): p1 alone on its side of q's plane with

@@ -128,6 +128,31 @@ TEST(SelfCollision, TouchingAndCoplanarPairsAreKept) {
   EXPECT_TRUE(self_collision_pairs(s.particles.x, s.triangles).empty());
 }
 
+// Tree shapes and coordinate ranges at the edges: meshes of 0 to 40 triangles (a lone leaf,
+// part-filled leaves and nodes), and soups scaled from 1e-300 (far below the float range: boxes
+// round out to +-FLT_MIN) to 1e300 (far above it: boxes clamp to +-FLT_MAX and beyond), mixed
+// with exact zeros. The float boxes must stay conservative, so the result is still brute force's.
+TEST(SelfCollision, BroadPhaseMatchesBruteForceAtEveryMeshSizeAndScale) {
+  std::mt19937_64 rng(7);
+  for (double scale : {1e-300, 1e-40, 1.0, 3e38, 1e300}) {
+    for (int count = 0; count <= 40; ++count) {
+      std::vector<Vec3> x;
+      std::vector<std::array<int, 3>> tris;
+      for (int t = 0; t < count; ++t) {
+        const Vec3 c = random_point(rng, -1, 1);
+        for (int k = 0; k < 3; ++k) {
+          Vec3 p = (c + random_point(rng, -0.6, 0.6)) * scale;
+          if (t % 5 == 0) p.z() = 0.0;  // some on the plane z = 0 exactly: coplanar, touching
+          x.push_back(p);
+        }
+        tris.push_back({3 * t, 3 * t + 1, 3 * t + 2});
+      }
+      SelfCollisionDetector det(tris, x);
+      EXPECT_EQ(det.detect(x), self_collision_pairs_brute(x, tris)) << "scale " << scale << ", " << count << " triangles";
+    }
+  }
+}
+
 // The responder counts checks and contact checks and detects every `every` steps.
 TEST(SelfCollision, ResponderCountsFramesWithContact) {
   Scene s;
