@@ -47,6 +47,12 @@ ClothGridSpec read_cloth(const JsonReader& r, const Json& j, const std::string& 
   ClothGridSpec c;
   c.rows = static_cast<int>(r.integer(r.require(j, w, "rows"), child(w, "rows"), 2, 4096));
   c.cols = static_cast<int>(r.integer(r.require(j, w, "cols"), child(w, "cols"), 2, 4096));
+  // About 6 springs and 2 triangles per node: 2^20 nodes take a few hundred MB; more would fail
+  // in the allocator (exit 3) minutes later instead of here.
+  constexpr long long kMaxClothNodes = 1LL << 20;
+  if (static_cast<long long>(c.rows) * c.cols > kMaxClothNodes)
+    r.fail(child(w, "cols"), "rows x cols = " + std::to_string(static_cast<long long>(c.rows) * c.cols) +
+                                 " nodes exceeds the limit of " + std::to_string(kMaxClothNodes));
   c.spacing = r.number(r.require(j, w, "spacing"), child(w, "spacing"), 1e6);
   if (!(c.spacing > 0.0)) r.fail(child(w, "spacing"), "spacing must be > 0");
   c.origin = r.vec3(r.require(j, w, "origin"), child(w, "origin"), kMaxCoordinate);

@@ -32,11 +32,18 @@ Tolerances Tolerances::load(const std::string& path) {
 }
 
 double Tolerances::get(const std::string& pointer) const {
-  const io::Json::json_pointer p(pointer);
-  if (!doc_.contains(p)) throw io::InputError(file_, pointer, "missing tolerance");
-  const io::Json& v = doc_.at(p);
-  if (!v.is_number()) throw io::InputError(file_, pointer, "expected a number");
-  return v.get<double>();
+  // nlohmann throws on pointers that do not fit the document's shape (an array index that is
+  // not a number, a malformed pointer): that is the same "missing tolerance" to the user.
+  const io::Json* v = nullptr;
+  try {
+    const io::Json::json_pointer p(pointer);
+    if (doc_.contains(p)) v = &doc_.at(p);
+  } catch (const io::Json::exception&) {
+    v = nullptr;
+  }
+  if (!v) throw io::InputError(file_, pointer, "missing tolerance");
+  if (!v->is_number()) throw io::InputError(file_, pointer, "expected a number");
+  return v->get<double>();
 }
 
 }  // namespace tecido::suites

@@ -4,6 +4,8 @@
 /// along forward and right. Two-sided: a particle may hit it from either side.
 #include "core/geometry/types.h"
 
+#include <cmath>
+
 namespace tecido {
 
 struct BoundedPlane {
@@ -31,14 +33,29 @@ struct BoundedPlane {
 };
 
 /// Makes a plane from possibly unnormalised normal and forward; forward is orthogonalised
-/// against the normal (Gram-Schmidt). The caller validates that neither is zero and that they
+/// against the normal by Gram-Schmidt applied twice ("twice is enough", Parlett 1980: one pass
+/// leaves a residual of eps / sin(angle), 1e-7 for a forward 1e-9 rad off the normal; the second
+/// pass brings it to eps). Vectors that are already unit length and orthogonal (to within a few
+/// ulps) are kept exactly as given, so a plane that is written out at full precision and read
+/// back is the same plane, bit for bit. The caller validates that neither is zero and that they
 /// are not parallel.
 inline BoundedPlane make_bounded_plane(const Vec3& position, const Vec3& normal, const Vec3& forward,
                                        const Vec2& half_extents, double friction) {
+  constexpr double kTol = 1e-14;
+  auto unit = [](const Vec3& v) {
+    const double n2 = v.squaredNorm();
+    return std::abs(n2 - 1.0) <= kTol ? v : Vec3(v / std::sqrt(n2));
+  };
   BoundedPlane p;
   p.position = position;
-  p.normal = normal.normalized();
-  p.forward = (forward - p.normal * p.normal.dot(forward)).normalized();
+  p.normal = unit(normal);
+  Vec3 f = unit(forward);
+  if (!(std::abs(p.normal.dot(f)) <= kTol)) {
+    f -= p.normal * p.normal.dot(f);
+    f -= p.normal * p.normal.dot(f);
+    f = unit(f);
+  }
+  p.forward = f;
   p.half_extents = half_extents;
   p.friction = friction;
   return p;

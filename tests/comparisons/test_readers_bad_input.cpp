@@ -7,6 +7,8 @@
 
 #include <gtest/gtest.h>
 
+#include <random>
+
 namespace tecido {
 namespace {
 
@@ -91,6 +93,35 @@ TEST(CasesReader, RejectsBadCases) {
   expect_all_rejected(bad, [](const io::Json& j, const std::string& f) { return io::plane_cases_from_json(j, f); });
 }
 
+// A plane written by plane_cases_to_json and read back is the same plane bit for bit, even when
+// its forward was given nearly parallel to its normal: a case file reproduces what the suite saw.
+TEST(CasesReader, WrittenPlanesReadBackBitForBit) {
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> u(-3, 3);
+  std::vector<io::PlaneCase> cases;
+  for (int k = 0; k < 500; ++k) {
+    io::PlaneCase c;
+    c.id = "case-" + std::to_string(k);
+    const Vec3 n(u(rng), u(rng), u(rng));
+    const Vec3 f = k % 2 ? Vec3(n * 2.0 + Vec3(u(rng), u(rng), u(rng)) * 1e-7) : Vec3(u(rng), u(rng), u(rng));
+    c.plane = make_bounded_plane(Vec3(u(rng), u(rng), u(rng)), n, f, Vec2(std::abs(u(rng)), std::abs(u(rng))), 0.25);
+    c.from = Vec3(u(rng), u(rng), u(rng));
+    c.to = Vec3(u(rng), u(rng), u(rng));
+    cases.push_back(c);
+  }
+  const std::string text = io::plane_cases_to_json(cases).dump();
+  const auto back = io::plane_cases_from_json(io::parse_json_text(text, "cases.json"), "cases.json");
+  ASSERT_EQ(back.size(), cases.size());
+  for (std::size_t k = 0; k < cases.size(); ++k) {
+    EXPECT_EQ(back[k].plane.normal, cases[k].plane.normal) << k;
+    EXPECT_EQ(back[k].plane.forward, cases[k].plane.forward) << k;
+    EXPECT_EQ(back[k].plane.position, cases[k].plane.position) << k;
+    EXPECT_EQ(back[k].plane.half_extents, cases[k].plane.half_extents) << k;
+    EXPECT_EQ(back[k].from, cases[k].from) << k;
+    EXPECT_EQ(back[k].to, cases[k].to) << k;
+  }
+}
+
 TEST(ToleranceFile, RejectsBadFilesAndMissingKeys) {
   const auto dir = testing::temp_dir("tolerances");
   testing::write_text(dir / "t1.json", R"({"order":{"band":"wide"}})");
@@ -102,6 +133,10 @@ TEST(ToleranceFile, RejectsBadFilesAndMissingKeys) {
   testing::write_text(dir / "t4.json", R"({"order":{"band":0.15}})");
   const auto t = suites::Tolerances::load((dir / "t4.json").string());
   EXPECT_EQ(t.get("/order/band"), 0.15);
+  // Pointers that do not fit the document's shape are missing tolerances too, not crashes.
+  const suites::Tolerances arr(io::parse_json_text("[1, [2]]", "arr.json"), "arr.json");
+  for (const char* bad : {"/", "//", "/1/", "/order", "/1/x", "/7", "no-slash"}) EXPECT_THROW(arr.get(bad), io::InputError) << bad;
+  EXPECT_EQ(arr.get("/1/0"), 2.0);
   try {
     t.get("/order/roundoff_floor");
     ADD_FAILURE();

@@ -69,6 +69,10 @@ std::vector<BadScene> bad_scenes() {
  "springs":[{"i":0,"j":1,"stiffness":4.0,"rest_length":1.0}],)", "\"particles\":[],"), "/particles", "no particles"},
       {"negative_stiffness", replace(g, "\"stiffness\":4.0", "\"stiffness\":-4.0"), "/springs/0/stiffness", "outside"},
       {"pinned_not_bool", replace(g, "\"pinned\":false", "\"pinned\":\"no\""), "/particles/0/pinned", "expected true or false"},
+      // 16.7 M nodes would need ~4 GB and fail in the allocator minutes later (found by fuzz_scene).
+      {"huge_cloth", R"({"dt":0.01,"steps":0,"cloth":{"rows":4096,"cols":4096,"spacing":0.001,"origin":[0,0,0],)"
+                     R"("axis_u":[1,0,0],"axis_v":[0,1,0],"total_mass":1,"stiffness_b":1}})",
+       "/cloth/cols", "exceeds the limit"},
   };
 }
 
