@@ -305,11 +305,16 @@ bool boxes_overlap(const Triangle& p, const Triangle& q) {
   return true;
 }
 
-/// The rare branch: all of p on q's plane or all of q on p's plane. Either the pair is
-/// coplanar or one triangle is degenerate (its "plane" is every plane through it).
-bool coplanar_or_degenerate(const Triangle& p, const Triangle& q) {
-  if (!boxes_overlap(p, q)) return false;
-  return simplices_meet(classify(p), classify(q));
+/// The rare branch (common only for flat cloth): every vertex of `on` lies on the plane of
+/// `base` (exactly). Either the pair is coplanar or one triangle is degenerate (its "plane" is
+/// every plane through it). Fast path: base is non-degenerate with normal axis k, so `on` lies
+/// in base's plane, and `on` is non-degenerate iff its projection along k is (one orient2d
+/// instead of classifying both).
+bool coplanar_or_degenerate(const Triangle& on, const Triangle& base) {
+  if (!boxes_overlap(on, base)) return false;
+  const int k = normal_axis(base[0], base[1], base[2]);
+  if (k >= 0 && orient_drop(on[0], on[1], on[2], k) != 0) return coplanar_triangles(base, on, k);
+  return simplices_meet(classify(on), classify(base));
 }
 
 }  // namespace
@@ -321,7 +326,7 @@ bool tri_tri_intersect(const Triangle& p, const Triangle& q) {
   const int sum_p = sp[0] + sp[1] + sp[2];
   if (sum_p == 3 || sum_p == -3) return false;  // all three strictly on one side
   // All of p on q's plane: a coplanar pair or a degenerate q (or p); step 3 below.
-  if ((sp[0] | sp[1] | sp[2]) == 0) return coplanar_or_degenerate(p, q);
+  if ((sp[0] | sp[1] | sp[2]) == 0) return coplanar_or_degenerate(/*on=*/p, /*base=*/q);
   // 2. The same for q against p's plane.
   int sq[3];
   plane_sides(p, q, sq);
@@ -330,7 +335,7 @@ bool tri_tri_intersect(const Triangle& p, const Triangle& q) {
   // 3. A triangle entirely on the other's plane: coplanar pair or a degenerate triangle.
   //    Otherwise some side is nonzero on each triangle, which certifies both non-degenerate.
   if ((sq[0] | sq[1] | sq[2]) == 0) {
-    return coplanar_or_degenerate(p, q);
+    return coplanar_or_degenerate(/*on=*/q, /*base=*/p);
   }
   // 4. Canonical form (Guigue & Devillers, section 3): p1 alone on its side of q's plane with
   //    [q1,q2,q3,p1] > 0, q1 alone with [p1,p2,p3,q1] > 0; circular shifts keep the brackets,
