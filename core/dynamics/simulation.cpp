@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 
 namespace tecido {
 
@@ -11,7 +12,8 @@ namespace {
 std::int8_t sign_of(double s) { return s > 0.0 ? 1 : (s < 0.0 ? -1 : 0); }
 }  // namespace
 
-Simulation::Simulation(const Scene& scene) : scene_(scene), p_(scene.particles), integ_(scene.integrator) {
+Simulation::Simulation(const Scene& scene)
+    : scene_(scene), p_(scene.particles), springs_(scene.forces.springs), integ_(scene.integrator) {
   tol_ = scene_.contact.bisection_tolerance > 0.0 ? scene_.contact.bisection_tolerance : scene_.dt * 0x1.0p-20;
   accel_ = [this](double t, const std::vector<Vec3>& x, const std::vector<Vec3>& v, std::vector<Vec3>& a) {
     accelerations(t, x, v, a);
@@ -23,7 +25,7 @@ Simulation::Simulation(const Scene& scene) : scene_(scene), p_(scene.particles),
   if (n_planes_ == 0) return;
   // Initial sides: the side the particle is on; on the plane, the side it comes from (against
   // its velocity, else against its free acceleration, else the normal's side).
-  compute_accelerations(scene_.forces, p_.inv_mass, 0.0, p_.x, p_.v, a_free_);
+  compute_accelerations(scene_.forces, springs_, p_.inv_mass, 0.0, p_.x, p_.v, a_free_);
   for (std::size_t i = 0; i < n; ++i) {
     for (std::size_t k = 0; k < n_planes_; ++k) {
       const BoundedPlane& pl = scene_.planes[k];
@@ -38,7 +40,7 @@ Simulation::Simulation(const Scene& scene) : scene_(scene), p_(scene.particles),
 
 void Simulation::accelerations(double t, const std::vector<Vec3>& x, const std::vector<Vec3>& v,
                                std::vector<Vec3>& a) {
-  compute_accelerations(scene_.forces, p_.inv_mass, t, x, v, a);
+  compute_accelerations(scene_.forces, springs_, p_.inv_mass, t, x, v, a);
   // Resting contacts: the plane cancels the part of the acceleration that points into it.
   for (const auto& [i, k] : resting_) {
     const Vec3& n = scene_.planes[k].normal;
@@ -127,7 +129,7 @@ void Simulation::begin_step_resting(double t) {
   if (resting_.empty()) return;
   // Release contacts whose free acceleration pulls away or that slid off the rectangle; keep the
   // others on the plane with no normal velocity, and apply friction once per step.
-  compute_accelerations(scene_.forces, p_.inv_mass, t, p_.x, p_.v, a_free_);
+  compute_accelerations(scene_.forces, springs_, p_.inv_mass, t, p_.x, p_.v, a_free_);
   std::vector<std::pair<int, int>> kept;
   kept.reserve(resting_.size());
   for (const auto& [i, k] : resting_) {
@@ -147,6 +149,23 @@ void Simulation::begin_step_resting(double t) {
 
 bool Simulation::check_finite() {
   const std::size_t n = p_.size();
+  // Fast path: a double is NaN or infinite exactly when its 11 exponent bits are all ones,
+  // i.e. when adding 1 to the exponent field carries into the sign bit. OR-ing that sum over
+  // the flat arrays is a branch-free integer loop the compiler vectorizes; only when it finds
+  // something does the per-particle scan below name the particle and the quantity.
+  auto any_non_finite = [](const std::vector<Vec3>& a) {
+    const std::size_t m = 3 * a.size();
+    const double* d = a.empty() ? nullptr : a.front().data();
+    constexpr std::uint64_t kExp = 0x7ff0000000000000ull, kExpOne = 1ull << 52, kSign = 1ull << 63;
+    std::uint64_t acc = 0;
+    for (std::size_t k = 0; k < m; ++k) {
+      std::uint64_t b;
+      std::memcpy(&b, d + k, sizeof b);
+      acc |= (b & kExp) + kExpOne;
+    }
+    return (acc & kSign) != 0;
+  };
+  if (!any_non_finite(p_.x) && !any_non_finite(p_.v)) return true;
   for (std::size_t i = 0; i < n; ++i) {
     const char* what = !p_.x[i].allFinite() ? "position" : (!p_.v[i].allFinite() ? "velocity" : nullptr);
     if (what) {

@@ -94,6 +94,7 @@ class Simulation {
 
   Scene scene_;
   Particles p_;
+  PackedSprings springs_;  // scene_.forces.springs compiled for the force loop
   Integrator integ_;
   AccelerationFn accel_;
   double tol_ = 0.0;
