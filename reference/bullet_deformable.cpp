@@ -66,6 +66,19 @@ std::vector<std::pair<double, std::size_t>> histogram(const std::vector<double>&
   return h;
 }
 
+// btDeformableBodySolver keeps its iteration caps protected (m_maxNewtonIterations, and the
+// Krylov solvers m_cg, used with projection, and m_cr, without); this subclass only sets them.
+class TunableDeformableBodySolver : public btDeformableBodySolver {
+ public:
+  void set_iterations(int newton, int krylov) {
+    if (newton > 0) m_maxNewtonIterations = newton;
+    if (krylov > 0) {
+      m_cg.m_maxIterations = krylov;
+      m_cr.m_maxIterations = krylov;
+    }
+  }
+};
+
 }  // namespace
 
 struct DeformableTwin::Impl {
@@ -76,7 +89,7 @@ struct DeformableTwin::Impl {
   btSoftBodyRigidBodyCollisionConfiguration collision_config;
   std::unique_ptr<btCollisionDispatcher> dispatcher;
   std::unique_ptr<btDbvtBroadphase> broadphase;
-  std::unique_ptr<btDeformableBodySolver> body_solver;
+  std::unique_ptr<TunableDeformableBodySolver> body_solver;
   std::unique_ptr<btDeformableMultiBodyConstraintSolver> constraint_solver;
   std::unique_ptr<btDeformableMultiBodyDynamicsWorld> world;
   btSoftBody* body = nullptr;  // owned; deleted after removal from the world
@@ -101,7 +114,10 @@ DeformableTwin::Impl::Impl(const Scene& s, const DeformableTwinOptions& o) : sce
   if (!(scene.dt > 0.0)) throw std::invalid_argument("DeformableTwin: scene.dt must be positive");
   dispatcher = std::make_unique<btCollisionDispatcher>(&collision_config);
   broadphase = std::make_unique<btDbvtBroadphase>();
-  body_solver = std::make_unique<btDeformableBodySolver>();
+  if (options.newton_iterations < 0 || options.krylov_iterations < 0)
+    throw std::invalid_argument("DeformableTwin: iteration counts must be >= 0 (0 = Bullet's default)");
+  body_solver = std::make_unique<TunableDeformableBodySolver>();
+  body_solver->set_iterations(options.newton_iterations, options.krylov_iterations);
   constraint_solver = std::make_unique<btDeformableMultiBodyConstraintSolver>();
   constraint_solver->setDeformableSolver(body_solver.get());  // without it: segfault on step
   world = std::make_unique<btDeformableMultiBodyDynamicsWorld>(dispatcher.get(), broadphase.get(),
@@ -110,7 +126,8 @@ DeformableTwin::Impl::Impl(const Scene& s, const DeformableTwinOptions& o) : sce
   const Vec3 g = scene.forces.gravity.value_or(Vec3::Zero());
   world->setGravity(to_bt(g));                  // rigid bodies only (our planes are static)
   world->getWorldInfo().m_gravity = to_bt(g);   // defaults to (0,-10,0); unused by this world's nodes
-  world->setImplicit(false);                    // explicit = symplectic Euler
+  world->setImplicit(options.implicit);         // explicit = symplectic Euler
+  world->setUseProjection(options.implicit);    // implicit mode freezes without projection
   world->setLineSearch(false);
 
   const auto& p = scene.particles;
@@ -238,7 +255,11 @@ void DeformableTwin::Impl::build_planes() {
 }
 
 void DeformableTwin::Impl::report_unmodelled() {
-  if (scene.integrator != IntegratorKind::Symplectic) {
+  if (options.implicit) {
+    not_modelled.push_back(
+        "integrator: implicit mode, Bullet's Newton iterations on a linearised backward-Euler step (projection on), "
+        "not symplectic Euler: it damps the motion");
+  } else if (scene.integrator != IntegratorKind::Symplectic) {
     not_modelled.push_back(std::string("integrator ") + integrator_name(scene.integrator) +
                            ": Bullet's explicit deformable step is symplectic Euler only");
   }
@@ -323,6 +344,33 @@ std::vector<Vec3> DeformableTwin::velocities() const {
   out.reserve(n);
   for (std::size_t i = 0; i < n; ++i) out.push_back(from_bt(impl_->body->m_nodes[static_cast<int>(i)].m_v));
   return out;
+}
+
+std::optional<std::vector<Vec3>> run_deformable_twin(const Scene& scene, double h, double seconds,
+                                                     const DeformableTwinOptions& options, double stray_limit) {
+  if (!(h > 0.0) || !(seconds >= 0.0)) throw std::invalid_argument("run_deformable_twin: h must be positive, seconds >= 0");
+  Scene s = scene;
+  s.dt = h;
+  s.integrator = IntegratorKind::Symplectic;  // the scene's own integrator is not this run's
+  DeformableTwin twin(s, options);
+  const std::vector<Vec3>& x0 = scene.particles.x;
+  const double limit2 = stray_limit * stray_limit;
+  // Bullet zeroes NaN velocity increments and clamps speeds, so a blown-up run stays finite: a
+  // node far from its start is the sign. Reads the nodes through positions() (a copy) only every
+  // 64 steps, so the check costs little.
+  auto strayed = [&] {
+    const std::vector<Vec3> x = twin.positions();
+    for (std::size_t k = 0; k < x.size(); ++k)
+      if (!((x[k] - x0[k]).squaredNorm() <= limit2)) return true;
+    return false;
+  };
+  const long long n = std::llround(seconds / h);
+  for (long long i = 0; i < n; ++i) {
+    if (!twin.step()) return std::nullopt;
+    if ((i & 63) == 63 && strayed()) return std::nullopt;
+  }
+  if (strayed()) return std::nullopt;
+  return twin.positions();
 }
 
 std::vector<std::string> DeformableTwin::not_modelled() const { return impl_->not_modelled; }

@@ -12,6 +12,7 @@
 #include "core/scene/scene.h"
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -28,6 +29,18 @@ struct DeformableTwinOptions {
   /// nodes tunnel. When free particles start on both sides the box is centred on the plane and
   /// not_modelled() says so.
   double plane_thickness = 0.1;
+  /// Bullet's implicit mode instead of the explicit twin: btDeformableBodySolver's Newton loop on
+  /// a linearised backward-Euler step (world.setImplicit(true) with setUseProjection(true); without
+  /// projection the cloth silently freezes). Not core's symplectic Euler: not_modelled() says so.
+  bool implicit = false;
+  /// The deformable world's solver iterations. newton_iterations: Newton steps per time step in
+  /// implicit mode (Bullet stops earlier when the residual norm falls below 1e-4); 0 = Bullet's
+  /// default, 5. krylov_iterations: the cap on conjugate-gradient iterations per linear solve (in
+  /// explicit mode the conjugate-residual solve of M dv = h f, which its mass preconditioner
+  /// settles in one iteration when nothing is damped, so this knob does not change the result);
+  /// 0 = Bullet's default, 300.
+  int newton_iterations = 0;
+  int krylov_iterations = 0;
 };
 
 /// The deformable-world twin of one Scene. Not copyable (Bullet keeps pointers into it); movable.
@@ -74,5 +87,15 @@ class DeformableTwin {
   struct Impl;
   std::unique_ptr<Impl> impl_;
 };
+
+/// Runs `scene` (its own dt ignored) with a DeformableTwin from its initial state for
+/// round(seconds / h) steps of h [s] and returns the node positions in core's numbering [m], or
+/// nothing when the run became unstable. Bullet keeps a diverging run finite (it zeroes NaN
+/// velocity increments and clamps speeds), so besides NaN/Inf a run counts as unstable when any
+/// node strays more than `stray_limit` [m] from its start (checked every 64 steps and at the end),
+/// the same test as core's tradeoff engines. Never hangs on a diverging run: the step count is fixed.
+std::optional<std::vector<Vec3>> run_deformable_twin(const Scene& scene, double h, double seconds,
+                                                     const DeformableTwinOptions& options = {},
+                                                     double stray_limit = 1e3);
 
 }  // namespace tecido::reference

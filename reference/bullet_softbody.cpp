@@ -313,6 +313,30 @@ long long ClassicSoftBody::steps_done() const { return impl_->steps; }
 const ClassicSoftBodyOptions& ClassicSoftBody::options() const { return impl_->options; }
 double ClassicSoftBody::plane_contact_offset() const { return impl_->contact_offset; }
 
+std::optional<std::vector<Vec3>> run_classic_soft_body(const Scene& scene, double h, double seconds,
+                                                       const ClassicSoftBodyOptions& options, double stray_limit) {
+  if (!(h > 0.0) || !(seconds >= 0.0)) throw std::invalid_argument("run_classic_soft_body: h must be positive, seconds >= 0");
+  Scene s = scene;
+  s.dt = h;
+  s.integrator = IntegratorKind::Symplectic;  // the scene's own integrator is not this run's
+  ClassicSoftBody body(s, options);
+  const std::vector<Vec3>& x0 = scene.particles.x;
+  const double limit2 = stray_limit * stray_limit;
+  auto strayed = [&] {
+    const std::vector<Vec3> x = body.positions();
+    for (std::size_t k = 0; k < x.size(); ++k)
+      if (!((x[k] - x0[k]).squaredNorm() <= limit2)) return true;
+    return false;
+  };
+  const long long n = std::llround(seconds / h);
+  for (long long i = 0; i < n; ++i) {
+    if (!body.step()) return std::nullopt;
+    if ((i & 63) == 63 && strayed()) return std::nullopt;
+  }
+  if (strayed()) return std::nullopt;
+  return body.positions();
+}
+
 // ---- calibration ------------------------------------------------------------------------------
 
 double mean_sag(const Scene& scene, const std::vector<Vec3>& x) {
@@ -431,30 +455,72 @@ double calibrate_klst_for_sag(const Scene& scene, const SagCalibrationOptions& o
     if (cal.evaluations == 1 || std::abs(t.sag - target) < std::abs(best.sag - target)) best = t;
   };
 
-  const Trial stiff = run(1.0);
-  consider(stiff);
-  cal.sag_at_klst_1 = stiff.sag;
-  if (stiff.sag > target + tol) {
-    // Even kLST = 1 sags more than core: Bullet cannot be as stiff with these piterations and dt.
-  } else if (std::abs(stiff.sag - target) > tol) {
-    const Trial soft = run(o.klst_min);
-    consider(soft);
-    if (soft.sag >= target - tol) {
-      cal.bracketed = true;
-      double lo = std::log(o.klst_min), hi = 0.0;  // sag(lo) >= target >= sag(hi)
-      for (int it = 0; it < o.max_bisections && std::abs(best.sag - target) > tol; ++it) {
-        const double mid = 0.5 * (lo + hi);
-        const Trial t = run(std::exp(mid));
-        consider(t);
-        if (t.sag > target) {
-          lo = mid;  // too soft: stiffer
-        } else {
-          hi = mid;
+  if (o.klst_guess > 0.0) {
+    // Safeguarded secant on f(u) = log(sag(e^u) / target), u = log kLST, u in [log klst_min, 0].
+    // f falls as u grows; the first secant slope is -1 (sag ~ 1/kLST). A bracket [u_soft, u_stiff]
+    // (f >= 0 at u_soft, f <= 0 at u_stiff) is kept once both signs are seen, and a secant step
+    // that leaves it is replaced by the bracket's midpoint.
+    const double u_min = std::log(o.klst_min);
+    const double log_target = std::log(target);
+    auto f = [&](const Trial& t) { return std::log(t.sag) - log_target; };
+    auto matched = [&] { return std::abs(best.sag - target) <= tol; };
+    double soft = u_min, stiff = 0.0;
+    bool have_soft = false, have_stiff = false;
+    auto bracket = [&](double u, double fu) {
+      if (fu >= 0.0 && (!have_soft || u > soft)) soft = u, have_soft = true;
+      if (fu <= 0.0 && (!have_stiff || u < stiff)) stiff = u, have_stiff = true;
+    };
+    if (!(target > 0.0)) throw std::runtime_error("calibrate_klst_for_sag: core's sag is not positive; no kLST guess can match it");
+    double u0 = std::clamp(std::log(o.klst_guess), u_min, 0.0);
+    Trial t0 = run(std::exp(u0));
+    consider(t0);
+    if (!(t0.sag > 0.0)) throw std::runtime_error("calibrate_klst_for_sag: Bullet's sag is not positive at the kLST guess");
+    double f0 = f(t0);
+    bracket(u0, f0);
+    double u1 = std::clamp(u0 + f0, u_min, 0.0);  // slope -1
+    for (int it = 0; it < o.max_bisections && !matched() && u1 != u0; ++it) {
+      Trial t1 = run(std::exp(u1));
+      consider(t1);
+      if (!(t1.sag > 0.0)) break;
+      const double f1 = f(t1);
+      bracket(u1, f1);
+      if (std::abs(t1.sag - target) <= tol) break;
+      const double slope = (f1 - f0) / (u1 - u0);
+      double u2 = slope < 0.0 && std::isfinite(slope) ? u1 - f1 / slope : 0.5 * (soft + stiff);
+      if (have_soft && have_stiff && !(u2 > soft && u2 < stiff)) u2 = 0.5 * (soft + stiff);
+      u2 = std::clamp(u2, u_min, 0.0);
+      u0 = u1;
+      f0 = f1;
+      u1 = u2;
+    }
+    cal.bracketed = matched() || (have_soft && have_stiff);
+    cal.sag_at_klst_1 = std::nan("");
+  } else {
+    const Trial stiff = run(1.0);
+    consider(stiff);
+    cal.sag_at_klst_1 = stiff.sag;
+    if (stiff.sag > target + tol) {
+      // Even kLST = 1 sags more than core: Bullet cannot be as stiff with these piterations and dt.
+    } else if (std::abs(stiff.sag - target) > tol) {
+      const Trial soft = run(o.klst_min);
+      consider(soft);
+      if (soft.sag >= target - tol) {
+        cal.bracketed = true;
+        double lo = std::log(o.klst_min), hi = 0.0;  // sag(lo) >= target >= sag(hi)
+        for (int it = 0; it < o.max_bisections && std::abs(best.sag - target) > tol; ++it) {
+          const double mid = 0.5 * (lo + hi);
+          const Trial t = run(std::exp(mid));
+          consider(t);
+          if (t.sag > target) {
+            lo = mid;  // too soft: stiffer
+          } else {
+            hi = mid;
+          }
         }
       }
+    } else {
+      cal.bracketed = true;
     }
-  } else {
-    cal.bracketed = true;
   }
   cal.klst = best.klst;
   cal.bullet_sag = best.sag;

@@ -13,6 +13,7 @@
 #include "core/scene/scene.h"
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -91,6 +92,11 @@ struct SagCalibrationOptions {
   double relative_tolerance = 1e-3;  ///< bisection stops when |sag error| <= this * |core sag|
   int max_bisections = 40;
   double klst_min = 1e-4;  ///< lower end of the kLST bracket (upper end is 1)
+  /// When > 0, a first estimate of kLST: the search starts there with a safeguarded secant on
+  /// log sag against log kLST (the sag of a stretch-dominated cloth is close to a power law in
+  /// kLST), typically 2-4 settles instead of about a dozen, and never probes kLST = 1 unless the
+  /// secant goes there (sag_at_klst_1 is then NaN). 0 = bisection on [klst_min, 1] as described below.
+  double klst_guess = 0.0;
 };
 
 /// What calibrate_klst_for_sag found, for the suite's report.
@@ -100,13 +106,13 @@ struct SagCalibration {
   double bullet_sag = 0.0;      ///< Bullet's settled mean sag with klst [m]
   double sag_error = 0.0;       ///< bullet_sag - core_sag [m]
   double relative_error = 0.0;  ///< |sag_error| / |core_sag|
-  double sag_at_klst_1 = 0.0;   ///< Bullet's sag with kLST = 1: how far the uncalibrated default is
+  double sag_at_klst_1 = 0.0;   ///< Bullet's sag with kLST = 1: how far the uncalibrated default is (NaN if not run)
   /// RMS over all nodes of |x_core - x_bullet| between the two settled shapes at klst [m]: how
   /// well the shape, not only the mean sag, matches.
   double shape_rms = 0.0;
   double shape_max = 0.0;       ///< largest node distance between the two settled shapes [m]
   int evaluations = 0;          ///< Bullet settles run
-  bool bracketed = false;       ///< core's sag lies between Bullet's sags at klst_min and 1
+  bool bracketed = false;       ///< core's sag lies between Bullet's sags at klst_min and 1 (or was matched)
   bool core_settled = false;    ///< core reached rest_speed within max_time
   bool bullet_settled = false;  ///< the final Bullet run reached rest_speed within max_time
   int piterations = 0;          ///< copied from the options: kLST is meaningless without them
@@ -131,5 +137,14 @@ struct SagCalibration {
 /// an 11x11 grid 0.019. Recalibrate for every dt, piterations and mesh.
 double calibrate_klst_for_sag(const Scene& scene, const SagCalibrationOptions& options = {},
                               SagCalibration* result = nullptr);
+
+/// Runs `scene` (its own dt ignored) with a ClassicSoftBody built with `options` from its initial
+/// state for round(seconds / h) steps of h [s] and returns the node positions in core's numbering
+/// [m], or nothing when the run became unstable: a non-finite state, or a node more than
+/// `stray_limit` [m] from its start (checked every 64 steps and at the end; the position solver
+/// keeps most bad runs bounded, so this rarely fires: a bounded but wrong run is judged by its error).
+std::optional<std::vector<Vec3>> run_classic_soft_body(const Scene& scene, double h, double seconds,
+                                                       const ClassicSoftBodyOptions& options = {},
+                                                       double stray_limit = 1e3);
 
 }  // namespace tecido::reference

@@ -5,6 +5,7 @@
 // writes DIR/experiment.json and DIR/experiment.md. With --shard i/n only the runs whose index
 // % n == i, and only DIR/experiment.json, marked as a shard; `tecido merge` joins the shards.
 #include "comparisons/cli/commands.h"
+#include "comparisons/cli/shard_option.h"
 #include "comparisons/io/atomic_file.h"
 #include "comparisons/io/input_error.h"
 #include "comparisons/suites/experiment_self_contact.h"
@@ -50,23 +51,6 @@ std::vector<int> parse_runs(const std::string& list) {
   }
   if (out.empty()) throw io::UsageError("--runs: no run index given");
   return out;
-}
-
-/// "i/n" -> (i, n) with 0 <= i < n.
-std::pair<int, int> parse_shard(const std::string& text) {
-  const auto slash = text.find('/');
-  try {
-    if (slash == std::string::npos) throw std::invalid_argument(text);
-    const std::string a = text.substr(0, slash), b = text.substr(slash + 1);
-    std::size_t used = 0;
-    const int i = std::stoi(a, &used);
-    if (used != a.size()) throw std::invalid_argument(text);
-    const int n = std::stoi(b, &used);
-    if (used != b.size() || n < 1 || i < 0 || i >= n) throw std::invalid_argument(text);
-    return {i, n};
-  } catch (const std::exception&) {
-    throw io::UsageError("--shard: \"" + text + "\" is not i/n with 0 <= i < n");
-  }
 }
 
 Command add_experiment(CLI::App& app) {

@@ -1,8 +1,18 @@
-// tecido suite NAME... | all [--out DIR] [--quick] [--seed N] [--threads N] [--tolerances FILE]
+// tecido suite NAME... | all [--out DIR] [--quick] [--seed N] [--threads N] [--tolerances FILE] [--shard i/n]
+// Runs the suites and writes DIR/report.json and DIR/report.md. The sweep suites (tritri, stability,
+// tradeoff) run their cases on --threads threads with a progress bar on a terminal. With --shard i/n
+// only their cases whose index % n == i run, and DIR/shard.json holds the case results instead of a
+// report (comparisons/suites/suite_shard.h); `tecido merge` assembles the report from the shards.
+// `all --shard` shards the sweep suites and skips the others (saying so on stderr); naming a suite
+// that cannot be sharded is a usage error.
 #include "comparisons/cli/commands.h"
+#include "comparisons/cli/shard_option.h"
+#include "comparisons/io/atomic_file.h"
 #include "comparisons/io/gnuplot.h"
 #include "comparisons/io/input_error.h"
 #include "comparisons/suites/report.h"
+#include "comparisons/suites/suite_shard.h"
+#include "comparisons/suites/sweep.h"
 
 #include <algorithm>
 #include <chrono>
@@ -10,6 +20,8 @@
 #include <iostream>
 #include <memory>
 #include <thread>
+#include <tuple>
+#include <unistd.h>
 
 namespace tecido::cli {
 
@@ -21,6 +33,7 @@ Command add_suite(CLI::App& app) {
     std::string out = "out";
     std::string tolerances;
     std::string data;
+    std::string shard;
     bool quick = false;
     std::uint64_t seed = 20141;
     int threads = 0;
@@ -36,11 +49,24 @@ Command add_suite(CLI::App& app) {
   sub->add_option("--threads", o->threads, "Worker threads (0 = all cores); results do not depend on it");
   sub->add_option("--tolerances", o->tolerances, "Tolerance file (default data/tolerances.json)");
   sub->add_option("--data", o->data, "Data directory (default: the source tree's data/)");
+  sub->add_option("--shard", o->shard,
+                  "Only the cases whose index % n == i of the sweep suites (tritri, stability, tradeoff), e.g. 0/8: "
+                  "writes DIR/shard.json; join the shards with `tecido merge`");
   return [o]() {
+    const bool sharded = !o->shard.empty();
+    int shard_index = 0, shard_count = 1;
+    if (sharded) std::tie(shard_index, shard_count) = cli::parse_shard(o->shard);
     std::vector<const suites::SuiteEntry*> chosen;
+    std::string skipped;
     for (const auto& name : o->names) {
       if (name == "all") {
-        for (const auto& s : suites::suite_registry()) chosen.push_back(&s);
+        for (const auto& s : suites::suite_registry()) {
+          if (sharded && !s.sweep) {
+            skipped += (skipped.empty() ? "" : ", ") + s.name;
+            continue;
+          }
+          chosen.push_back(&s);
+        }
         continue;
       }
       const auto& reg = suites::suite_registry();
@@ -49,6 +75,12 @@ Command add_suite(CLI::App& app) {
         std::string all;
         for (const auto& s : reg) all += (all.empty() ? "" : ", ") + s.name;
         throw io::UsageError("unknown suite \"" + name + "\" (known: " + all + ", all)");
+      }
+      if (sharded && !it->sweep) {
+        std::string can;
+        for (const auto& s : reg)
+          if (s.sweep) can += (can.empty() ? "" : ", ") + s.name;
+        throw io::UsageError("--shard: suite \"" + name + "\" cannot be sharded (only " + can + " can)");
       }
       chosen.push_back(&*it);
     }
@@ -62,6 +94,31 @@ Command add_suite(CLI::App& app) {
     ctx.threads = o->threads > 0 ? o->threads : std::max(1u, std::thread::hardware_concurrency());
     ctx.tolerances = &tol;
     ctx.gnuplot = io::gnuplot_available();
+    ctx.progress = true;
+    if (sharded) {
+      if (!skipped.empty())
+        std::cerr << "suite: --shard: skipping " << skipped << " (not split into cases; run them unsharded)\n";
+      std::vector<suites::SuiteSlice> slices;
+      std::string summary;
+      for (const auto* s : chosen) {
+        const auto t0 = std::chrono::steady_clock::now();
+        const suites::Sweep sweep = s->sweep(ctx);
+        suites::SuiteSlice sl;
+        sl.name = s->name;
+        sl.cases = sweep.cases;
+        sl.indices = suites::shard_indices(sweep.cases, shard_index, shard_count);
+        sl.results = suites::run_sweep_cases(sweep, sl.indices, ctx.threads, "suite " + s->name + " " + o->shard,
+                                             ctx.progress);
+        sl.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+        summary += (summary.empty() ? "" : ", ") + s->name + " " + std::to_string(sl.indices.size()) + " of " +
+                   std::to_string(sl.cases) + " cases";
+        slices.push_back(std::move(sl));
+      }
+      io::write_file_atomic(ctx.out_dir + "/shard.json",
+                            suites::suite_shard_json(slices, ctx, shard_index, shard_count));
+      std::cout << "suite shard " << o->shard << ": " << summary << "; wrote " << ctx.out_dir << "/shard.json\n";
+      return 0;
+    }
     std::filesystem::create_directories(ctx.out_dir);
     std::vector<suites::SuiteResult> results;
     for (const auto* s : chosen) {
@@ -72,6 +129,8 @@ Command add_suite(CLI::App& app) {
       r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
       int failed = 0;
       for (const auto& c : r.checks) failed += c.pass ? 0 : 1;
+      // On a terminal a sweep's progress bar took the line: name the suite again.
+      if (s->sweep && ::isatty(2) == 1) std::cerr << "suite " << s->name << ":";
       std::cerr << " " << r.checks.size() - failed << " passed, " << failed << " failed (" << r.seconds << " s)\n";
       results.push_back(std::move(r));
     }

@@ -7,6 +7,7 @@
 #include "comparisons/suites/tradeoff_suite.h"
 #include "comparisons/suites/tritri_suite.h"
 #include "comparisons/suites/suite.h"
+#include "comparisons/suites/sweep.h"
 
 namespace tecido::suites {
 
@@ -15,11 +16,11 @@ const std::vector<SuiteEntry>& suite_registry() {
       {"order", "observed error order of each integrator on analytic problems", &run_order_suite},
       {"drift", "energy and momentum over long runs; core vs Bullet on identical cloth", &run_drift_suite},
       {"plane", "segment vs bounded plane agreement with the exact referee; bisected contact time", &run_plane_suite},
-      {"tritri", "triangle-triangle engines vs the exact referee by category, ns per pair", &run_tritri_suite},
+      {"tritri", "triangle-triangle engines vs the exact referee by category, ns per pair", &run_tritri_suite, &tritri_sweep},
       {"selfcollision", "self-collision pair sets per engine vs exact on recorded frames: precision, recall, time", &run_selfcollision_suite},
       {"bench", "runs tecido-bench: time per pair/frame/step and ratios against the reference engines", &run_bench_suite},
-      {"stability", "largest stable step per integrator vs theory; offsets, mass ratios, tiny springs, resting, tunnelling", &run_stability_suite},
-      {"tradeoff", "cost against accuracy of every engine and step on hanging cloths; Pareto front", &run_tradeoff_suite},
+      {"stability", "largest stable step per integrator vs theory; offsets, mass ratios, tiny springs, resting, tunnelling", &run_stability_suite, &stability_sweep},
+      {"tradeoff", "cost against accuracy of every engine and step on hanging cloths; Pareto front", &run_tradeoff_suite, &tradeoff_sweep},
   };
   return suites;
 }

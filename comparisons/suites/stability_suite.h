@@ -12,6 +12,7 @@
 /// and the displacement from equilibrium never exceeds `amplitude_bound` times the initial one.
 /// Both numbers come from data/tolerances.json (/stability/periods, /stability/amplitude_bound).
 #include "comparisons/suites/suite.h"
+#include "comparisons/suites/sweep.h"
 #include "core/dynamics/integrator.h"
 #include "core/scene/scene.h"
 
@@ -56,6 +57,9 @@ OscillatorRun run_oscillator(IntegratorKind k, double ks, double m, double h, do
 StableStep oscillator_max_step(IntegratorKind k, double ks, double m, double periods, double amplitude_bound,
                                double rel_tol);
 
+/// The suite as a sweep (comparisons/suites/sweep.h): one case per grid cell's bisection, per
+/// horizon, per growth run and per group of extremes.
+Sweep stability_sweep(const SuiteContext& ctx);
 SuiteResult run_stability_suite(const SuiteContext& ctx);
 
 }  // namespace tecido::suites

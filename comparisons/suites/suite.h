@@ -32,6 +32,8 @@ class Tolerances {
   /// The number at `pointer`; throws io::InputError naming the file when it is missing.
   double get(const std::string& pointer) const;
   const std::string& file() const { return file_; }
+  /// The whole document (a suite shard carries it to `tecido merge`).
+  const io::Json& doc() const { return doc_; }
 
  private:
   io::Json doc_;
@@ -46,6 +48,7 @@ struct SuiteContext {
   int threads = 1;
   const Tolerances* tolerances = nullptr;
   bool gnuplot = false;    ///< gnuplot found on PATH
+  bool progress = false;   ///< sweep suites draw a progress bar on stderr (only on a terminal)
 };
 
 struct SuiteResult {
@@ -58,11 +61,16 @@ struct SuiteResult {
 };
 
 using SuiteFn = std::function<SuiteResult(const SuiteContext&)>;
+struct Sweep;
+using SweepFn = std::function<Sweep(const SuiteContext&)>;
 
 struct SuiteEntry {
   std::string name;
   std::string summary;
   SuiteFn run;
+  /// Set for a suite split into cases (comparisons/suites/sweep.h): `run` runs them on ctx.threads
+  /// threads; `tecido suite --shard i/n` runs a slice and `tecido merge` assembles the slices.
+  SweepFn sweep = nullptr;
 };
 
 /// Every registered suite in the order `all` runs them.

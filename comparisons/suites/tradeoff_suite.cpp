@@ -3,19 +3,20 @@
 #include "comparisons/io/atomic_file.h"
 #include "comparisons/io/gnuplot.h"
 #include "comparisons/suites/random.h"
+#include "comparisons/suites/sweep.h"
 #include "core/cloth/cloth_builder.h"
 #include "core/dynamics/simulation.h"
+#ifdef TECIDO_HAVE_REFERENCE
+#include "comparisons/engines/tradeoff_bullet_engines.h"
+#endif
 
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <atomic>
 #include <chrono>
 #include <cmath>
-#include <exception>
 #include <limits>
-#include <mutex>
-#include <thread>
+#include <memory>
 
 namespace tecido::suites {
 
@@ -50,7 +51,11 @@ std::vector<TradeoffEngine> tradeoff_engines() {
   std::vector<TradeoffEngine> engines;
   for (IntegratorKind k : {IntegratorKind::Euler, IntegratorKind::Symplectic, IntegratorKind::Midpoint, IntegratorKind::RK4})
     engines.push_back(core_tradeoff_engine(k));
-  // More engines (e.g. a Bullet soft-body adapter behind TECIDO_HAVE_REFERENCE) are appended here.
+#ifdef TECIDO_HAVE_REFERENCE
+  // Bullet's deformable world (explicit twin; implicit at 1, 4, 16 CG iterations) and classic soft
+  // body (1, 4, 16 position sweeps, kLST calibrated to core's sag): comparisons/engines/tradeoff_bullet_engines.h.
+  for (TradeoffEngine& e : bullet_tradeoff_engines()) engines.push_back(std::move(e));
+#endif
   return engines;
 }
 
@@ -124,30 +129,6 @@ double omega_bound(const Scene& scene) {
 
 namespace {
 
-/// Runs the tasks on up to `threads` threads (each task writes only its own results), rethrowing
-/// the first exception.
-void run_parallel(const std::vector<std::function<void()>>& tasks, int threads) {
-  std::atomic<std::size_t> next{0};
-  std::exception_ptr error;
-  std::mutex m;
-  auto worker = [&] {
-    for (std::size_t k; (k = next.fetch_add(1)) < tasks.size();) {
-      try {
-        tasks[k]();
-      } catch (...) {
-        std::lock_guard<std::mutex> lock(m);
-        if (!error) error = std::current_exception();
-      }
-    }
-  };
-  const int n = std::max(1, std::min<int>(threads, static_cast<int>(tasks.size())));
-  std::vector<std::thread> pool;
-  for (int t = 1; t < n; ++t) pool.emplace_back(worker);
-  worker();
-  for (auto& t : pool) t.join();
-  if (error) std::rethrow_exception(error);
-}
-
 /// The scene with every free node moved by 1e-12 m in a seeded random direction, in the cloth's
 /// plane (y = 0) or out of it (along y).
 Scene nudged(const Scene& s, std::uint64_t seed, bool out_of_plane) {
@@ -171,22 +152,27 @@ struct Timed {
   std::optional<std::vector<Vec3>> x;
   double seconds = 0.0;  // wall time of one call (min over repeats for short runs)
   int repeats = 0;
+  double rerun_diff = std::numeric_limits<double>::infinity();  // max |x - x of the second call|
 };
 
-/// Times engine.run; a run shorter than 0.05 s is repeated (up to 10 calls or 0.25 s in all) and
-/// the fastest call is kept, so that short runs are not timed at the clock's resolution.
+/// Runs engine.run once untimed (it fills any per-engine cache, such as the classic soft body's
+/// kLST calibration, which is set-up, not stepping), then times it: a run shorter than 0.05 s is
+/// repeated (up to 10 calls or 0.25 s in all) and the fastest call is kept, so that short runs
+/// are not timed at the clock's resolution. The reproducibility of a stable run: the first timed
+/// call's positions against the untimed call's.
 Timed timed_run(const TradeoffEngine& e, const Scene& scene, double h, double T) {
   using clock = std::chrono::steady_clock;
   Timed t;
+  t.x = e.run(scene, h, T);
   double total = 0.0;
   t.seconds = std::numeric_limits<double>::infinity();
   do {
     const auto t0 = clock::now();
-    auto x = e.run(scene, h, T);
+    const auto x = e.run(scene, h, T);
     const double s = std::chrono::duration<double>(clock::now() - t0).count();
     total += s;
     t.seconds = std::min(t.seconds, s);
-    if (t.repeats == 0) t.x = std::move(x);
+    if (t.repeats == 0 && t.x && x) t.rerun_diff = max_abs_difference(*t.x, *x);
     ++t.repeats;
   } while (t.x && t.seconds < 0.05 && total < 0.25 && t.repeats < 10);
   return t;
@@ -200,6 +186,7 @@ struct Point {
   double cost = std::nan("");   // wall seconds per simulated second
   double evals = std::nan("");  // force evaluations per simulated second
   double error = std::nan("");  // RMS distance to the reference at T
+  double rerun_diff = std::numeric_limits<double>::infinity();  // max |x - x_rerun|
   std::vector<Vec3> x;
 };
 
@@ -214,9 +201,83 @@ std::string h_label(double h) {
   return fmt::format("{:.3g}", h);
 }
 
+/// The cloth sizes and how many halvings of the step each sweeps (h0, h0/2, ...).
+struct TradeoffSize {
+  int n;
+  int steps;
+};
+
+/// h0 = 2^ceil(log2(2 / omega_bound)) and its halvings: `steps` swept step sizes [s].
+std::vector<double> swept_steps(const Scene& scene, int steps) {
+  const double h0 = std::pow(2.0, std::ceil(std::log2(2.0 / omega_bound(scene))));
+  std::vector<double> hs;
+  for (int j = 0; j < steps; ++j) hs.push_back(h0 / std::pow(2.0, j));
+  return hs;
+}
+
+/// Untimed runs of each size, before its points: the reference (RK4 at h_ref), its confirmation
+/// (RK4 at 2 h_ref), and the conditioning probes (symplectic at the smallest swept step, from the
+/// rest shape and from 1e-12 m nudges in and out of the plane).
+constexpr std::size_t kUntimed = 5;
+
+/// What the cases and the assembly share. Case order: for each size, its kUntimed untimed runs,
+/// then one timed point per engine (outer) and swept step (inner).
+struct TradeoffPlan {
+  SuiteContext ctx;
+  std::vector<TradeoffEngine> engines;
+  std::vector<TradeoffSize> sizes;
+  std::vector<Scene> scenes;            ///< hanging_cloth(n) per size
+  std::vector<std::size_t> first_case;  ///< per size
+  std::size_t cases = 0;
+  double T = 1.0;                       ///< simulated time [s]
+};
+
+/// Whether the suite leaves out engine e's point on the n x n cloth at the j-th swept step.
+bool skipped(const TradeoffEngine& e, int n, std::size_t j) {
+  return (e.max_n > 0 && n > e.max_n) || (e.max_steps > 0 && j >= static_cast<std::size_t>(e.max_steps));
+}
+
+/// Case k: {"x": final positions or null (unstable)}; a timed point adds "seconds" (wall seconds
+/// of one run, this machine) and "rerun_diff" (max |x - x of a second run| [m], inf when unstable).
+io::Json tradeoff_case(const TradeoffPlan& plan, std::size_t k) {
+  std::size_t si = 0;
+  while (si + 1 < plan.sizes.size() && k >= plan.first_case[si + 1]) ++si;
+  const std::size_t local = k - plan.first_case[si];
+  const int n = plan.sizes[si].n;
+  const Scene& scene = plan.scenes[si];
+  const std::vector<double> hs = swept_steps(scene, plan.sizes[si].steps);
+  const double h_ref = hs.back() / 4.0;
+  auto positions = [](const std::optional<std::vector<Vec3>>& x) { return x ? vec3s_json(*x) : io::Json(nullptr); };
+  if (local < kUntimed) {
+    const TradeoffEngine rk4 = core_tradeoff_engine(IntegratorKind::RK4);
+    const TradeoffEngine probe = core_tradeoff_engine(IntegratorKind::Symplectic);
+    const std::uint64_t seed = plan.ctx.seed;
+    switch (local) {
+      case 0: return {{"x", positions(rk4.run(scene, h_ref, plan.T))}};
+      case 1: return {{"x", positions(rk4.run(scene, 2.0 * h_ref, plan.T))}};
+      case 2: return {{"x", positions(probe.run(scene, hs.back(), plan.T))}};
+      case 3: return {{"x", positions(probe.run(nudged(scene, substream(seed, 2 * n), false), hs.back(), plan.T))}};
+      default: return {{"x", positions(probe.run(nudged(scene, substream(seed, 2 * n + 1), true), hs.back(), plan.T))}};
+    }
+  }
+  const std::size_t e = (local - kUntimed) / hs.size(), j = (local - kUntimed) % hs.size();
+  if (skipped(plan.engines[e], n, j)) return {{"skipped", true}};
+  const Timed t = timed_run(plan.engines[e], scene, hs[j], plan.T);
+  return {{"x", positions(t.x)}, {"seconds", num(t.seconds)}, {"rerun_diff", num(t.rerun_diff)}};
+}
+
+std::optional<std::vector<Vec3>> positions_of(const io::Json& result) {
+  const io::Json& x = result.at("x");
+  if (x.is_null()) return std::nullopt;
+  return vec3s_from_json(x);
+}
+
 }  // namespace
 
-SuiteResult run_tradeoff_suite(const SuiteContext& ctx) {
+namespace {
+
+SuiteResult tradeoff_assemble(const TradeoffPlan& plan, const std::vector<io::Json>& results) {
+  const SuiteContext& ctx = plan.ctx;
   SuiteResult res;
   res.name = "tradeoff";
   const Tolerances& tol = *ctx.tolerances;
@@ -226,17 +287,10 @@ SuiteResult run_tradeoff_suite(const SuiteContext& ctx) {
   const double order_lo = tol.get("/tradeoff/reference_order_lo"), order_hi = tol.get("/tradeoff/reference_order_hi");
   const double cond_max = tol.get("/tradeoff/conditioning_max");
   const double front_min = tol.get("/tradeoff/front_min_points");
-  const double T = 1.0;
+  const double T = plan.T;
   const std::string dir = ctx.out_dir + "/tradeoff";
-  const std::vector<TradeoffEngine> engines = tradeoff_engines();
-  const TradeoffEngine reference_engine = core_tradeoff_engine(IntegratorKind::RK4);
-
-  struct Size {
-    int n;
-    int steps;  // step sizes swept (h0, h0/2, ...)
-  };
-  const std::vector<Size> sizes = ctx.quick ? std::vector<Size>{{16, 5}, {32, 4}}
-                                            : std::vector<Size>{{16, 5}, {32, 5}, {64, 4}, {128, 2}};
+  const std::vector<TradeoffEngine>& engines = plan.engines;
+  const std::vector<TradeoffSize>& sizes = plan.sizes;
 
   std::string md = fmt::format(
       "The scene: a curtain, a 1 m x 1 m cloth of n x n nodes (the cloth builder's grid, type B springs 1 N/m, type "
@@ -265,40 +319,38 @@ SuiteResult run_tradeoff_suite(const SuiteContext& ctx) {
   std::string summary = "### Pareto fronts\n\n| nodes | engine | h [s] | cost [s/s] | force evals / s | RMS error [m] |\n"
                         "|---|---|---:|---:|---:|---:|\n";
 
-  for (const Size& sz : sizes) {
-    const int n = sz.n;
-    const Scene scene = hanging_cloth(n);
+  for (std::size_t si = 0; si < sizes.size(); ++si) {
+    const int n = sizes[si].n;
+    const Scene& scene = plan.scenes[si];
     const double wb = omega_bound(scene);
-    const double h0 = std::pow(2.0, std::ceil(std::log2(2.0 / wb)));
-    std::vector<double> hs;
-    for (int j = 0; j < sz.steps; ++j) hs.push_back(h0 / std::pow(2.0, j));
+    const std::vector<double> hs = swept_steps(scene, sizes[si].steps);
+    const double h0 = hs.front();
     const double h_ref = hs.back() / 4.0;
     const std::string tag = fmt::format("cloth{}", n);
 
-    // Untimed, on ctx.threads threads: the reference, and two conditioning probes (symplectic at
-    // the smallest swept step, from the start and from a 1e-12 m nudge in and out of the plane).
-    const TradeoffEngine probe_engine = core_tradeoff_engine(IntegratorKind::Symplectic);
-    std::optional<std::vector<Vec3>> ref, conf, probe0, probe_in, probe_out;
-    const Scene nudged_in = nudged(scene, substream(ctx.seed, 2 * n), false);
-    const Scene nudged_out = nudged(scene, substream(ctx.seed, 2 * n + 1), true);
-    run_parallel({[&] { ref = reference_engine.run(scene, h_ref, T); },
-                  [&] { conf = reference_engine.run(scene, 2.0 * h_ref, T); },
-                  [&] { probe0 = probe_engine.run(scene, hs.back(), T); },
-                  [&] { probe_in = probe_engine.run(nudged_in, hs.back(), T); },
-                  [&] { probe_out = probe_engine.run(nudged_out, hs.back(), T); }},
-                 ctx.threads);
+    // The untimed runs (the first cases of this size).
+    const std::size_t base = plan.first_case[si];
+    const auto ref = positions_of(results.at(base)), conf = positions_of(results.at(base + 1));
+    const auto probe0 = positions_of(results.at(base + 2)), probe_in = positions_of(results.at(base + 3)),
+               probe_out = positions_of(results.at(base + 4));
     const double amp_in = probe0 && probe_in ? rms_distance(*probe0, *probe_in) / 1e-12 : std::nan("");
     const double amp_out = probe0 && probe_out ? rms_distance(*probe0, *probe_out) / 1e-12 : std::nan("");
     res.checks.push_back(make_check(fmt::format("tradeoff/{}/conditioning", n), amp_in, 0.0, cond_max,
                                     "RMS change at t = 1 s per metre of in-plane nudge at t = 0 (1e-12 m)"));
 
     std::vector<Point> pts;
+    std::size_t point_k = base + kUntimed;
     for (std::size_t e = 0; e < engines.size(); ++e) {
       for (double h : hs) {
         Point p;
         p.engine = static_cast<int>(e);
         p.h = h;
-        Timed t = timed_run(engines[e], scene, h, T);
+        const io::Json& jr = results.at(point_k++);
+        if (jr.contains("skipped")) continue;  // outside the engine's range (TradeoffEngine::max_n, max_steps)
+        Timed t;
+        t.x = positions_of(jr);
+        t.seconds = get_num(jr.at("seconds"));
+        p.rerun_diff = get_num(jr.at("rerun_diff"));
         if (!t.x) {
           p.status = "unstable (NaN/Inf or diverged)";
         } else {
@@ -344,18 +396,10 @@ SuiteResult run_tradeoff_suite(const SuiteContext& ctx) {
     for (int f : pareto_front(ce)) front.push_back(idx[f]);
     res.checks.push_back(make_check(fmt::format("tradeoff/{}/front_size", n), static_cast<double>(front.size()), front_min,
                                     1e300, "points on the front"));
-    // Reproducibility of the front points: rerun, compare bit for bit.
     io::Json jfront = io::Json::array();
-    std::vector<double> rerun_diff(front.size(), std::numeric_limits<double>::infinity());
-    std::vector<std::function<void()>> reruns;
-    for (std::size_t f = 0; f < front.size(); ++f) {
-      reruns.push_back([&, f] {
-        const Point& p = pts[front[f]];
-        const auto again = engines[p.engine].run(scene, p.h, T);
-        if (again) rerun_diff[f] = max_abs_difference(p.x, *again);
-      });
-    }
-    run_parallel(reruns, ctx.threads);
+    // Reproducibility of the front points: each point's case ran it a second time.
+    std::vector<double> rerun_diff(front.size());
+    for (std::size_t f = 0; f < front.size(); ++f) rerun_diff[f] = pts[front[f]].rerun_diff;
     for (std::size_t f = 0; f < front.size(); ++f) {
       const int i = front[f];
       const Point& p = pts[i];
@@ -442,10 +486,54 @@ SuiteResult run_tradeoff_suite(const SuiteContext& ctx) {
         "\nThe stable step shrinks as 1/n (the springs' highest frequency grows with the node count at fixed size "
         "and material), and explicit Euler and midpoint amplify undamped oscillations at every step (see the "
         "stability suite), so near symplectic Euler's limit they blow up and are counted only at smaller steps, if "
-        "at all. Other engines (Bullet's soft body) join this comparison by being appended to `tradeoff_engines()`.\n";
+        "at all.\n\n"
+#ifdef TECIDO_HAVE_REFERENCE
+        "Bullet 3.24 (double build) joins the comparison in both kinds. Costing one to two orders of magnitude "
+        "more than core per step, growing as nodes x steps, to keep the suite's time within bounds its engines run "
+        "only on cloths of at most 32^2 nodes (16^2 for the implicit and classic ones) and at the three largest "
+        "swept steps h0, h0/2, h0/4; the points outside are not run. `bullet-deformable` is the deformable world in explicit mode, the "
+        "same model (Hooke springs, masses, pins) and the same integrator as `core-symplectic`: its error is "
+        "core's to round-off (1e-15 m), only its cost differs, so it never reaches the front; its solver "
+        "iterations do not change an undamped explicit step (the mass-preconditioned solve converges in one), so "
+        "it has one entry. `bullet-deformable-implicit-itK` is the same world in implicit mode (Newton on a "
+        "linearised backward-Euler step) with each conjugate-gradient solve capped at K iterations: stable beyond "
+        "symplectic Euler's limit but damped, its error is first order in h and more iterations buy no accuracy "
+        "(an inexact solve damps less). `bullet-classic-itK` is the classic soft body with K position-solver "
+        "sweeps: its links are position constraints, not springs, so its stiffness kLST is calibrated for every "
+        "cloth, step and K until its static sag matches core's within 1 % (calibrate_klst_for_sag, started from "
+        "an h^2 / K scaling law, cached per cloth, step and K); the calibration runs in an untimed first call of "
+        "each point, so the costs are of stepping only. Its error against the RK4 "
+        "reference measures how far a position-based model is from the spring model as much as integration "
+        "error: on the 16^2 cloth it shrinks from 5 cm at h0 and levels off near 1 cm (9.7 mm at h0/32), "
+        "whatever the number of sweeps.\n";
+#else
+        "Bullet's engines join this comparison in the reference build (TECIDO_REFERENCE).\n";
+#endif
   res.markdown = md;
   res.data = data;
   return res;
 }
+
+}  // namespace
+
+Sweep tradeoff_sweep(const SuiteContext& ctx) {
+  auto plan = std::make_shared<TradeoffPlan>();
+  plan->ctx = ctx;
+  plan->engines = tradeoff_engines();
+  plan->sizes = ctx.quick ? std::vector<TradeoffSize>{{16, 5}, {32, 4}}
+                          : std::vector<TradeoffSize>{{16, 5}, {32, 5}, {64, 4}, {128, 2}};
+  for (const TradeoffSize& sz : plan->sizes) {
+    plan->scenes.push_back(hanging_cloth(sz.n));
+    plan->first_case.push_back(plan->cases);
+    plan->cases += kUntimed + plan->engines.size() * static_cast<std::size_t>(sz.steps);
+  }
+  Sweep s;
+  s.cases = plan->cases;
+  s.run_case = [plan](std::size_t k) { return tradeoff_case(*plan, k); };
+  s.assemble = [plan](const std::vector<io::Json>& results) { return tradeoff_assemble(*plan, results); };
+  return s;
+}
+
+SuiteResult run_tradeoff_suite(const SuiteContext& ctx) { return run_sweep(&tradeoff_sweep, ctx, "tradeoff"); }
 
 }  // namespace tecido::suites

@@ -9,6 +9,7 @@
 /// Pareto front (no other point is both cheaper and more accurate), plots cost against error,
 /// and reruns every front point to check that it is bit-for-bit reproducible.
 #include "comparisons/suites/suite.h"
+#include "comparisons/suites/sweep.h"
 #include "core/scene/scene.h"
 
 #include <functional>
@@ -25,6 +26,10 @@ struct TradeoffEngine {
   std::string name;                   ///< e.g. "core-rk4"
   double evaluations_per_step = 0.0;  ///< force evaluations per step, for the report (0 = unknown)
   std::function<std::optional<std::vector<Vec3>>(const Scene& scene, double h, double seconds)> run;
+  /// The suite runs this engine only on cloths of at most max_n x max_n nodes and at the
+  /// max_steps largest swept steps (0 = no limit): the points outside are skipped, not listed.
+  int max_n = 0;
+  int max_steps = 0;
 };
 
 /// The engines the suite compares, in report order: core's euler, symplectic, midpoint and rk4.
@@ -67,6 +72,10 @@ Scene hanging_cloth(int n);
 /// M^-1 K: max over nodes of (2 sum ks) / m).
 double omega_bound(const Scene& scene);
 
+/// The suite as a sweep (comparisons/suites/sweep.h): for each cloth size, five untimed runs (the
+/// reference, its confirmation, three conditioning probes), then one case per engine and step (a
+/// timed run and a rerun for reproducibility; the wall seconds travel in the case's result).
+Sweep tradeoff_sweep(const SuiteContext& ctx);
 SuiteResult run_tradeoff_suite(const SuiteContext& ctx);
 
 }  // namespace tecido::suites

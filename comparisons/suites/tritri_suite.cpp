@@ -4,12 +4,16 @@
 #include "comparisons/io/atomic_file.h"
 #include "comparisons/suites/plane_suite.h"
 #include "comparisons/suites/random.h"
+#include "comparisons/suites/sweep.h"
 
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <map>
+#include <memory>
 
 namespace tecido::suites {
 
@@ -106,29 +110,90 @@ std::vector<io::TriPair> make_tri_pairs(std::uint64_t seed, int n_random, int n_
   return out;
 }
 
-SuiteResult run_tritri_suite(const SuiteContext& ctx) {
+namespace {
+
+/// Pairs per case: each case runs every engine on one contiguous block of the pairs.
+constexpr std::size_t kBlock = 10000;
+/// At most this many disagreements are kept (in engine order, then pair order).
+constexpr std::size_t kMaxDisagreements = 100000;
+const std::vector<std::string>& categories() {
+  static const std::vector<std::string> cats = {"random", "near-coplanar", "coplanar", "touch-vertex", "touch-edge",
+                                                "shared-vertex", "sliver", "offset"};
+  return cats;
+}
+
+/// What every case and the assembly share: the pairs (generated once per process from the seed).
+struct TritriPlan {
+  SuiteContext ctx;
+  int n_random = 0, n_cat = 0;
+  std::vector<io::TriPair> pairs;
+  const TriTriEngine* referee = nullptr;
+};
+
+/// Case k: the referee and every engine on pairs [k kBlock, (k+1) kBlock). Result:
+/// {"true":{category: intersecting pairs}, "engines":[{"random_seconds": wall s over this block's
+/// random pairs, "tally":{category:[agree, pairs, no answer]}, "disagree":[pair index, ...]}]}.
+io::Json tritri_case(const TritriPlan& plan, std::size_t k) {
+  const std::size_t b0 = k * kBlock, b1 = std::min(plan.pairs.size(), b0 + kBlock);
+  const std::size_t r1 = std::min(b1, std::max(b0, static_cast<std::size_t>(plan.n_random)));  // random pairs: [b0, r1)
+  const auto& pairs = plan.pairs;
+  std::vector<char> truth(b1 - b0);
+  std::vector<std::string> cat(b1 - b0);
+  io::Json true_count = io::Json::object();
+  for (std::size_t i = b0; i < b1; ++i) {
+    truth[i - b0] = plan.referee->test(pairs[i].a, pairs[i].b).value_or(false);
+    cat[i - b0] = case_category(pairs[i].id);
+    true_count[cat[i - b0]] = true_count.value(cat[i - b0], 0L) + truth[i - b0];
+  }
+  io::Json engines = io::Json::array();
+  for (const auto& eng : tri_tri_engines()) {
+    std::vector<std::optional<bool>> got(b1 - b0);
+    // Time the random pairs alone (contiguous at the front of the pairs).
+    const auto t0 = std::chrono::steady_clock::now();
+    for (std::size_t i = b0; i < r1; ++i) got[i - b0] = eng.test(pairs[i].a, pairs[i].b);
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    for (std::size_t i = r1; i < b1; ++i) got[i - b0] = eng.test(pairs[i].a, pairs[i].b);
+    std::map<std::string, std::array<long, 3>> tally;  // agree, total, null
+    io::Json disagree = io::Json::array();
+    for (std::size_t i = b0; i < b1; ++i) {
+      auto& t = tally[cat[i - b0]];
+      ++t[1];
+      if (!got[i - b0]) {
+        ++t[2];
+      } else if (*got[i - b0] == static_cast<bool>(truth[i - b0])) {
+        ++t[0];
+      } else if (eng.name != "exact" && disagree.size() < kMaxDisagreements) {
+        disagree.push_back(i);
+      }
+    }
+    io::Json jt = io::Json::object();
+    for (const auto& [c, t] : tally) jt[c] = {t[0], t[1], t[2]};
+    engines.push_back({{"random_seconds", seconds}, {"tally", jt}, {"disagree", disagree}});
+  }
+  return {{"true", true_count}, {"engines", engines}};
+}
+
+SuiteResult tritri_assemble(const TritriPlan& plan, const std::vector<io::Json>& results) {
   SuiteResult res;
   res.name = "tritri";
+  const SuiteContext& ctx = plan.ctx;
   const Tolerances& tol = *ctx.tolerances;
-  const int n_random = ctx.quick ? 100000 : 1000000;
-  const int n_cat = ctx.quick ? 500 : 2000;
-  const auto pairs = make_tri_pairs(substream(ctx.seed, 2), n_random, n_cat);
-  const TriTriEngine* referee = find_tri_tri_engine("exact");
-  std::string md;
-  if (!referee) {
+  if (!plan.referee) {
     res.markdown = "The exact referee is not built in (reference adapters off): no agreement measured.\n";
     return res;
   }
-  std::vector<char> truth(pairs.size());
-  for (std::size_t i = 0; i < pairs.size(); ++i) truth[i] = referee->test(pairs[i].a, pairs[i].b).value_or(false);
-  const std::vector<std::string> cats = {"random", "near-coplanar", "coplanar", "touch-vertex", "touch-edge", "shared-vertex", "sliver", "offset"};
+  const auto& cats = categories();
+  const auto& pairs = plan.pairs;
+  const int n_random = plan.n_random;
   std::map<std::string, long> true_count;
-  for (std::size_t i = 0; i < pairs.size(); ++i) true_count[case_category(pairs[i].id)] += truth[i];
+  for (const auto& r : results)
+    for (auto it = r.at("true").begin(); it != r.at("true").end(); ++it) true_count[it.key()] += it.value().get<long>();
 
+  std::string md;
   md += fmt::format("{} random pairs in the unit cube and {} pairs of each adversarial family (seed {}). Each cell: pairs "
                     "where the engine agrees with the exact referee (CGAL exact predicates) / pairs; `n/a` = engine gave no "
                     "answer. ns/pair: mean over the random pairs, one thread, this run.\n\n",
-                    n_random, n_cat, ctx.seed);
+                    n_random, plan.n_cat, ctx.seed);
   md += "| engine | ns/pair |";
   for (const auto& c : cats) md += " " + c + " |";
   md += "\n|---|---:|";
@@ -139,27 +204,24 @@ SuiteResult run_tritri_suite(const SuiteContext& ctx) {
 
   std::vector<io::TriPair> disagreements;
   io::Json data = io::Json::object();
-  for (const auto& eng : tri_tri_engines()) {
-    std::vector<std::optional<bool>> got(pairs.size());
-    // Time the random pairs alone (contiguous at the front).
-    const auto t0 = std::chrono::steady_clock::now();
-    for (int i = 0; i < n_random; ++i) got[i] = eng.test(pairs[i].a, pairs[i].b);
-    const double ns = std::chrono::duration<double, std::nano>(std::chrono::steady_clock::now() - t0).count() / n_random;
-    for (std::size_t i = n_random; i < pairs.size(); ++i) got[i] = eng.test(pairs[i].a, pairs[i].b);
+  const auto& engines = tri_tri_engines();
+  for (std::size_t e = 0; e < engines.size(); ++e) {
+    const auto& eng = engines[e];
+    double seconds = 0.0;
     std::map<std::string, std::array<long, 3>> tally;  // agree, total, null
-    for (std::size_t i = 0; i < pairs.size(); ++i) {
-      auto& t = tally[case_category(pairs[i].id)];
-      ++t[1];
-      if (!got[i]) {
-        ++t[2];
-      } else if (*got[i] == static_cast<bool>(truth[i])) {
-        ++t[0];
-      } else if (eng.name != "exact" && disagreements.size() < 100000) {
-        io::TriPair d = pairs[i];
+    for (const auto& r : results) {
+      const io::Json& je = r.at("engines").at(e);
+      seconds += je.at("random_seconds").get<double>();
+      for (auto it = je.at("tally").begin(); it != je.at("tally").end(); ++it)
+        for (int q = 0; q < 3; ++q) tally[it.key()][q] += it.value().at(q).get<long>();
+      for (const auto& i : je.at("disagree")) {
+        if (disagreements.size() >= kMaxDisagreements) break;
+        io::TriPair d = pairs.at(i.get<std::size_t>());
         d.id = eng.name + ":" + d.id;
         disagreements.push_back(d);
       }
     }
+    const double ns = 1e9 * seconds / n_random;
     md += fmt::format("| {} | {:.0f} |", eng.name, ns);
     data[eng.name]["ns_per_pair"] = ns;
     for (const auto& c : cats) {
@@ -187,5 +249,25 @@ SuiteResult run_tritri_suite(const SuiteContext& ctx) {
   res.data = data;
   return res;
 }
+
+}  // namespace
+
+Sweep tritri_sweep(const SuiteContext& ctx) {
+  auto plan = std::make_shared<TritriPlan>();
+  plan->ctx = ctx;
+  plan->n_random = ctx.quick ? 100000 : 1000000;
+  plan->n_cat = ctx.quick ? 500 : 2000;
+  plan->referee = find_tri_tri_engine("exact");
+  Sweep s;
+  if (plan->referee) {
+    plan->pairs = make_tri_pairs(substream(ctx.seed, 2), plan->n_random, plan->n_cat);
+    s.cases = (plan->pairs.size() + kBlock - 1) / kBlock;
+  }
+  s.run_case = [plan](std::size_t k) { return tritri_case(*plan, k); };
+  s.assemble = [plan](const std::vector<io::Json>& results) { return tritri_assemble(*plan, results); };
+  return s;
+}
+
+SuiteResult run_tritri_suite(const SuiteContext& ctx) { return run_sweep(&tritri_sweep, ctx, "tritri"); }
 
 }  // namespace tecido::suites

@@ -1,0 +1,11 @@
+#pragma once
+/// The `--shard i/n` option shared by the sharded commands (`experiment`, `suite`).
+#include <string>
+#include <utility>
+
+namespace tecido::cli {
+
+/// "i/n" -> (i, n) with 0 <= i < n; throws io::UsageError otherwise.
+std::pair<int, int> parse_shard(const std::string& text);
+
+}  // namespace tecido::cli
