@@ -2,6 +2,7 @@
 
 #include "comparisons/io/input_error.h"
 #include "comparisons/io/json_reader.h"
+#include "comparisons/suites/shard_file.h"
 
 #include <fmt/format.h>
 
@@ -12,12 +13,6 @@
 namespace tecido::suites {
 
 namespace {
-
-struct Shard {
-  std::string file;
-  io::Json doc;
-  int index = 0, count = 0;
-};
 
 /// The settings a shard was run with (everything but the runs and the shard position).
 SelfContactOptions shard_options(const io::JsonReader& rd, const io::Json& doc) {
@@ -50,19 +45,16 @@ MergedSelfContact merge_self_contact_shards(const std::vector<std::string>& file
   const int run_count = static_cast<int>(all_runs.size());
 
   // Read every file; check it is a self-contact shard.
-  std::vector<Shard> shards;
+  std::vector<ShardFile> shards;
   for (const auto& file : files) {
-    Shard s;
+    ShardFile s;
     s.file = file;
     s.doc = io::read_json_file(file);
     const io::JsonReader rd(file);
     rd.require_object(s.doc, "");
     if (!s.doc.contains("shard"))
       rd.fail("/shard", "not a shard (written without --shard i/n); only shards can be merged");
-    const io::Json& pos = rd.require_array(s.doc["shard"], "/shard");
-    if (pos.size() != 2) rd.fail("/shard", "expected [i, n]");
-    s.count = static_cast<int>(rd.integer(pos[1], "/shard/1", 1, std::numeric_limits<int>::max()));
-    s.index = static_cast<int>(rd.integer(pos[0], "/shard/0", 0, s.count - 1));
+    read_shard_position(rd, s);
     const io::Json& experiment = rd.require(s.doc, "", "experiment");
     if (!experiment.is_string() || experiment.get<std::string>() != "self-contact")
       rd.fail("/experiment", "expected \"self-contact\" (the only experiment that can be sharded)");
@@ -70,23 +62,9 @@ MergedSelfContact merge_self_contact_shards(const std::vector<std::string>& file
   }
 
   // Same n, each shard once, none missing.
-  const Shard& first = shards.front();
+  const ShardFile& first = shards.front();
   const int n = first.count;
-  std::vector<const Shard*> by_index(static_cast<std::size_t>(n), nullptr);
-  for (const auto& s : shards) {
-    if (s.count != n)
-      throw io::InputError(s.file, "/shard",
-                           fmt::format("shard {}/{} does not belong with the {}-way shards of {}", s.index, s.count, n,
-                                       first.file));
-    if (by_index[s.index])
-      throw io::InputError(s.file, "/shard",
-                           fmt::format("shard {}/{} given twice (also {})", s.index, n, by_index[s.index]->file));
-    by_index[s.index] = &s;
-  }
-  for (int i = 0; i < n; ++i)
-    if (!by_index[i])
-      throw io::InputError(first.file, "/shard",
-                           fmt::format("shard {}/{} is missing ({} of {} shards given)", i, n, shards.size(), n));
+  const std::vector<const ShardFile*> by_index = shards_by_index(shards);
 
   // Same settings and selection.
   MergedSelfContact merged;
@@ -115,7 +93,7 @@ MergedSelfContact merge_self_contact_shards(const std::vector<std::string>& file
       throw io::InputError(first.file, io::child("/selection", k),
                            fmt::format("run {} is selected twice", selection[k]));
   std::vector<SelfContactResult> results(selection.size());
-  std::vector<const Shard*> found(selection.size(), nullptr);
+  std::vector<const ShardFile*> found(selection.size(), nullptr);
   for (const auto& s : shards) {
     const io::JsonReader rd(s.file);
     const io::Json& runs = rd.require_array(rd.require(s.doc, "", "runs"), "/runs");

@@ -2,6 +2,7 @@
 
 #include "comparisons/io/input_error.h"
 #include "comparisons/io/json_reader.h"
+#include "comparisons/suites/shard_file.h"
 
 #include <fmt/format.h>
 
@@ -22,12 +23,6 @@ io::Json settings_json(const SuiteContext& ctx) {
            {{"file", ctx.tolerances ? ctx.tolerances->file() : std::string()},
             {"contents", ctx.tolerances ? ctx.tolerances->doc() : io::Json::object()}}}};
 }
-
-struct ShardFile {
-  std::string file;
-  io::Json doc;
-  int index = 0, count = 0;
-};
 
 }  // namespace
 
@@ -71,31 +66,15 @@ MergedSuites merge_suite_shards(const std::vector<std::string>& files) {
     const io::JsonReader rd(file);
     rd.require_object(s.doc, "");
     if (!is_suite_shard(s.doc)) rd.fail("/format", std::string("not a suite shard (expected \"") + kFormat + "\")");
-    const io::Json& pos = rd.require_array(rd.require(s.doc, "", "shard"), "/shard");
-    if (pos.size() != 2) rd.fail("/shard", "expected [i, n]");
-    s.count = static_cast<int>(rd.integer(pos[1], "/shard/1", 1, std::numeric_limits<int>::max()));
-    s.index = static_cast<int>(rd.integer(pos[0], "/shard/0", 0, s.count - 1));
+    rd.require(s.doc, "", "shard");
+    read_shard_position(rd, s);
     shards.push_back(std::move(s));
   }
 
   // Same n, each shard once, none missing.
   const ShardFile& first = shards.front();
   const int n = first.count;
-  std::vector<const ShardFile*> by_index(static_cast<std::size_t>(n), nullptr);
-  for (const auto& s : shards) {
-    if (s.count != n)
-      throw io::InputError(s.file, "/shard",
-                           fmt::format("shard {}/{} does not belong with the {}-way shards of {}", s.index, s.count, n,
-                                       first.file));
-    if (by_index[s.index])
-      throw io::InputError(s.file, "/shard",
-                           fmt::format("shard {}/{} given twice (also {})", s.index, n, by_index[s.index]->file));
-    by_index[s.index] = &s;
-  }
-  for (int i = 0; i < n; ++i)
-    if (!by_index[i])
-      throw io::InputError(first.file, "/shard",
-                           fmt::format("shard {}/{} is missing ({} of {} shards given)", i, n, shards.size(), n));
+  const std::vector<const ShardFile*> by_index = shards_by_index(shards);
 
   // Same settings; the same suites with the same case counts.
   MergedSuites merged;
