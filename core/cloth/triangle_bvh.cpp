@@ -10,6 +10,12 @@
 #if defined(__SSE2__)
 #include <emmintrin.h>
 #endif
+#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
+#define TECIDO_BVH_AVX512 1
+#include <immintrin.h>
+#else
+#define TECIDO_BVH_AVX512 0
+#endif
 
 namespace tecido {
 
@@ -42,14 +48,76 @@ static_assert(TriangleBvh::kWidth == 4, "kLaterLanes and the SSE paths assume fo
 /// Index of the lowest set bit of a nonzero mask.
 inline int lowest_bit(unsigned m) { return __builtin_ctz(m); }
 
+#if TECIDO_BVH_AVX512
+#define TECIDO_BVH_TARGET_AVX512 __attribute__((target("avx512f")))
+// The 16 lanes of a 4 x 4 mask: lane 4k + l pairs lane k of node a with lane l of node b. a's
+// row of four is repeated (k = lane / 4), b's row is tiled (l = lane % 4). (The maskz_ forms
+// with a full mask: GCC 12's plain broadcast/permutexvar trip -Wuninitialized.)
+TECIDO_BVH_TARGET_AVX512 inline __m512 tile4(const float* row) {
+  return _mm512_maskz_broadcast_f32x4(0xFFFF, _mm_loadu_ps(row));
+}
+TECIDO_BVH_TARGET_AVX512 inline __m512 repeat4(const float* row) {
+  const __m512i rep = _mm512_set_epi32(3, 3, 3, 3, 2, 2, 2, 2, 1, 1, 1, 1, 0, 0, 0, 0);
+  return _mm512_maskz_permutexvar_ps(0xFFFF, rep, tile4(row));
+}
+TECIDO_BVH_TARGET_AVX512 inline __m512i tile4(const int* row) {
+  return _mm512_maskz_broadcast_i32x4(0xFFFF, _mm_loadu_si128(reinterpret_cast<const __m128i*>(row)));
+}
+TECIDO_BVH_TARGET_AVX512 inline __m512i repeat4(const int* row) {
+  const __m512i rep = _mm512_set_epi32(3, 3, 3, 3, 2, 2, 2, 2, 1, 1, 1, 1, 0, 0, 0, 0);
+  return _mm512_maskz_permutexvar_epi32(0xFFFF, rep, tile4(row));
+}
+
+// The whole 4 x 4 lane mask of a node pair in one pass over 16 AVX-512 lanes (chosen at run
+// time; the build stays baseline x86-64), instead of four 4-lane passes. The same closed-
+// interval compares as the SSE2 path, so the mask, and hence the output, is identical
+// whichever path runs. lo and hi point at a node's lo[3][4] / hi[3][4] rows.
+TECIDO_BVH_TARGET_AVX512 unsigned box_mask16_avx512(const float* alo, const float* ahi, const float* blo,
+                                                    const float* bhi) {
+  __mmask16 m = 0xFFFF;
+  for (int d = 0; d < 3; ++d) {
+    m = _mm512_mask_cmp_ps_mask(m, tile4(blo + 4 * d), repeat4(ahi + 4 * d), _CMP_LE_OQ);
+    m = _mm512_mask_cmp_ps_mask(m, repeat4(alo + 4 * d), tile4(bhi + 4 * d), _CMP_LE_OQ);
+  }
+  return m;
+}
+
+/// The same for two leaves, with the pairs that share a vertex removed: av and bv point at
+/// the leaves' v[3][4] vertex-id rows (nine equality tests per lane).
+TECIDO_BVH_TARGET_AVX512 unsigned leaf_mask16_avx512(const float* alo, const float* ahi, const float* blo,
+                                                     const float* bhi, const int* av, const int* bv) {
+  const __m512i b0 = tile4(bv), b1 = tile4(bv + 4), b2 = tile4(bv + 8);
+  __mmask16 share = 0;
+  for (int d = 0; d < 3; ++d) {
+    const __m512i a = repeat4(av + 4 * d);
+    share = static_cast<__mmask16>(share | _mm512_cmpeq_epi32_mask(a, b0) | _mm512_cmpeq_epi32_mask(a, b1) |
+                                   _mm512_cmpeq_epi32_mask(a, b2));
+  }
+  return box_mask16_avx512(alo, ahi, blo, bhi) & ~static_cast<unsigned>(share) & 0xFFFFu;
+}
+
+bool cpu_has_avx512f() {
+  __builtin_cpu_init();
+  return __builtin_cpu_supports("avx512f");
+}
+#endif
+
 }  // namespace
+
+bool TriangleBvh::wide_kernel_available() {
+#if TECIDO_BVH_AVX512
+  static const bool ok = cpu_has_avx512f();
+  return ok;
+#else
+  return false;
+#endif
+}
 
 void TriangleBvh::build(const std::vector<Vec3>& x, const std::vector<std::array<int, 3>>& triangles) {
   const int n = static_cast<int>(triangles.size());
   tri_count_ = triangles.size();
   nodes_.clear();
   node_box_.clear();
-  leaf_v_.clear();
   stack_bound_ = 1;
   if (n == 0) return;
   std::vector<Vec3> centroid(n);
@@ -61,7 +129,6 @@ void TriangleBvh::build(const std::vector<Vec3>& x, const std::vector<std::array
   std::iota(order.begin(), order.end(), 0);
   nodes_.reserve(static_cast<std::size_t>(n) / 2 + 1);
   nodes_.emplace_back();
-  leaf_v_.emplace_back();
   const int depth = build_node(0, 0, n, centroid, order, triangles);
   node_box_.resize(nodes_.size());
   // A pop removes one pair and pushes at most kWidth^2; pairs deeper down the tree of node
@@ -75,7 +142,7 @@ int TriangleBvh::build_node(int node, int begin, int end, const std::vector<Vec3
   const int count = end - begin;
   if (count <= kWidth) {
     Node& nd = nodes_[node];
-    LeafVerts& lv = leaf_v_[node];
+    LeafVerts& lv = nd.lv;
     nd.leaf = 1;
     nd.count = count;
     for (int k = 0; k < kWidth; ++k) {
@@ -120,10 +187,7 @@ int TriangleBvh::build_node(int node, int begin, int end, const std::vector<Vec3
   }
   bounds[groups] = end;
   const int first = static_cast<int>(nodes_.size());
-  for (int g = 0; g < groups; ++g) {
-    nodes_.emplace_back();
-    leaf_v_.emplace_back();
-  }
+  for (int g = 0; g < groups; ++g) nodes_.emplace_back();
   {
     Node& nd = nodes_[node];
     nd.leaf = 0;
@@ -133,13 +197,17 @@ int TriangleBvh::build_node(int node, int begin, int end, const std::vector<Vec3
       for (int d = 0; d < 3; ++d) {
         nd.lo[d][k] = kInf;
         nd.hi[d][k] = -kInf;
-        leaf_v_[node].v[d][k] = -1 - d;
+        nd.lv.v[d][k] = -1 - d;
       }
     }
   }
   int depth = 0;
-  for (int g = 0; g < groups; ++g)
+  unsigned leaf_kids = 0;
+  for (int g = 0; g < groups; ++g) {
     depth = std::max(depth, build_node(first + g, bounds[g], bounds[g + 1], centroid, order, triangles));
+    leaf_kids |= static_cast<unsigned>(nodes_[first + g].leaf) << g;
+  }
+  nodes_[node].leaf_kids = leaf_kids;
   return depth + 1;
 }
 
@@ -159,7 +227,7 @@ void TriangleBvh::refit(const std::vector<Vec3>& x) {
   for (std::size_t k = nodes_.size(); k-- > 0;) {
     Node& nd = nodes_[k];
     if (nd.leaf) {
-      const LeafVerts& lv = leaf_v_[k];
+      const LeafVerts& lv = nd.lv;
       for (int lane = 0; lane < nd.count; ++lane) {
         const auto& a = vlo_[lv.v[0][lane]];
         const auto& b = vlo_[lv.v[1][lane]];
@@ -232,66 +300,131 @@ unsigned TriangleBvh::lanes_sharing(const LeafVerts& b, int v0, int v1, int v2) 
 #endif
 }
 
-inline void TriangleBvh::leaf_pairs(int a, int b, std::vector<std::array<int, 2>>& out) const {
+inline void TriangleBvh::leaf_pairs(int a, int b, bool wide, std::vector<std::array<int, 2>>& out) const {
   const Node& na = nodes_[a];
   const Node& nb = nodes_[b];
-  const LeafVerts& la = leaf_v_[a];
-  const LeafVerts& lb = leaf_v_[b];
+  const LeafVerts& la = na.lv;
+  const LeafVerts& lb = nb.lv;
   // A 16-bit mask, bit 4k + l for lane k of a and lane l of b, built without branches; then
   // one loop over its (few) set bits. Unused lanes have empty boxes and never overlap.
   unsigned mask = 0;
-  for (int k = 0; k < kWidth; ++k) {
-    const float lo[3] = {na.lo[0][k], na.lo[1][k], na.lo[2][k]};
-    const float hi[3] = {na.hi[0][k], na.hi[1][k], na.hi[2][k]};
-    const unsigned m = lanes_overlapping(nb, lo, hi) & ~lanes_sharing(lb, la.v[0][k], la.v[1][k], la.v[2][k]);
-    mask |= m << (kWidth * k);
+#if TECIDO_BVH_AVX512
+  if (wide) {
+    mask = leaf_mask16_avx512(na.lo[0], na.hi[0], nb.lo[0], nb.hi[0], la.v[0], lb.v[0]);
+  } else
+#endif
+  {
+    for (int k = 0; k < kWidth; ++k) {
+      const float lo[3] = {na.lo[0][k], na.lo[1][k], na.lo[2][k]};
+      const float hi[3] = {na.hi[0][k], na.hi[1][k], na.hi[2][k]};
+      const unsigned m = lanes_overlapping(nb, lo, hi) & ~lanes_sharing(lb, la.v[0][k], la.v[1][k], la.v[2][k]);
+      mask |= m << (kWidth * k);
+    }
   }
   if (a == b) mask &= kLaterLanes;
   for (; mask; mask &= mask - 1) {
     const int bit = lowest_bit(mask);
     const int i = na.child[bit / kWidth], j = nb.child[bit % kWidth];
-    out.push_back({std::min(i, j), std::max(i, j)});
+    // Written in place (not push_back of a temporary, which GCC spills to the stack as two
+    // halves and reloads whole: a store-forwarding stall per pair).
+    std::array<int, 2>& e = out.emplace_back();
+    e[0] = std::min(i, j);
+    e[1] = std::max(i, j);
   }
 }
 
 void TriangleBvh::overlapping_pairs(std::vector<std::array<int, 2>>& out) {
   if (nodes_.empty()) return;
+  const bool wide = use_wide_ && wide_kernel_available();
+  if (nodes_[0].leaf) {
+    leaf_pairs(0, 0, wide, out);
+    return;
+  }
+  // Node pairs still to visit are pairs of internal nodes, or a leaf with an internal node: a
+  // pair of leaves is handled where it is found (leaf_kids marks the lanes that are leaves),
+  // which spares the stack round trip, a reload of both nodes and an unpredictable branch on
+  // their kinds for the most frequent kind of pair. The order of the output is still that of
+  // a depth-first traversal, deterministic.
+  // A stack entry is the pair packed in one 64-bit word (a low, b high): written and read
+  // back whole, so the pop right after a push is forwarded from the store buffer.
+  auto pack = [](int a, int b) {
+    return static_cast<std::uint64_t>(static_cast<std::uint32_t>(a)) |
+           static_cast<std::uint64_t>(static_cast<std::uint32_t>(b)) << 32;
+  };
+  auto prefetch_children = [this](const Node& n) {
+    const char* first = reinterpret_cast<const char*>(&nodes_[n.child[0]]);
+    for (std::size_t off = 0; off < n.count * sizeof(Node); off += 64) __builtin_prefetch(first + off);
+  };
   stack_.resize(stack_bound_);
-  std::array<int, 2>* stack = stack_.data();
+  std::uint64_t* stack = stack_.data();
   std::size_t top = 0;
-  stack[top++] = {0, 0};
+  stack[top++] = pack(0, 0);
   while (top > 0) {
-    const auto [a, b] = stack[--top];
+    const std::uint64_t entry = stack[--top];
+    const int a = static_cast<int>(static_cast<std::uint32_t>(entry));
+    const int b = static_cast<int>(static_cast<std::uint32_t>(entry >> 32));
     const Node& na = nodes_[a];
     const Node& nb = nodes_[b];
-    if (na.leaf & nb.leaf) {
-      leaf_pairs(a, b, out);
-      continue;
-    }
     if (na.leaf == nb.leaf) {
       // Two internal nodes, or one with itself: every overlapping pair of children, each
       // child with itself for a node with itself. The 4 x 4 mask is built without branches.
+      // The children (contiguous records) are about to be read: start fetching them now.
+      prefetch_children(na);
+      if (a != b) prefetch_children(nb);
       unsigned mask = 0;
-      for (int k = 0; k < kWidth; ++k) {
-        const float lo[3] = {na.lo[0][k], na.lo[1][k], na.lo[2][k]};
-        const float hi[3] = {na.hi[0][k], na.hi[1][k], na.hi[2][k]};
-        mask |= lanes_overlapping(nb, lo, hi) << (kWidth * k);
+#if TECIDO_BVH_AVX512
+      if (wide) {
+        mask = box_mask16_avx512(na.lo[0], na.hi[0], nb.lo[0], nb.hi[0]);
+      } else
+#endif
+      {
+        for (int k = 0; k < kWidth; ++k) {
+          const float lo[3] = {na.lo[0][k], na.lo[1][k], na.lo[2][k]};
+          const float hi[3] = {na.hi[0][k], na.hi[1][k], na.hi[2][k]};
+          mask |= lanes_overlapping(nb, lo, hi) << (kWidth * k);
+        }
       }
       if (a == b) {
         mask &= kLaterLanes;
-        for (int k = 0; k < na.count; ++k) stack[top++] = {na.child[k], na.child[k]};
+        for (int k = 0; k < na.count; ++k) {
+          const int c = na.child[k];
+          if ((na.leaf_kids >> k) & 1u) {
+            leaf_pairs(c, c, wide, out);
+          } else {
+            stack[top++] = pack(c, c);
+          }
+        }
       }
       for (; mask; mask &= mask - 1) {
         const int bit = lowest_bit(mask);
-        stack[top++] = {na.child[bit / kWidth], nb.child[bit % kWidth]};
+        const int k = bit / kWidth, l = bit % kWidth;
+        if ((na.leaf_kids >> k) & (nb.leaf_kids >> l) & 1u) {
+          leaf_pairs(na.child[k], nb.child[l], wide, out);
+        } else {
+          stack[top++] = pack(na.child[k], nb.child[l]);
+        }
       }
     } else if (na.leaf) {
       // A leaf against an internal node: descend the internal one.
-      for (unsigned m = lanes_overlapping(nb, node_box_[a].lo, node_box_[a].hi); m; m &= m - 1)
-        stack[top++] = {a, nb.child[lowest_bit(m)]};
+      prefetch_children(nb);
+      for (unsigned m = lanes_overlapping(nb, node_box_[a].lo, node_box_[a].hi); m; m &= m - 1) {
+        const int l = lowest_bit(m);
+        if ((nb.leaf_kids >> l) & 1u) {
+          leaf_pairs(a, nb.child[l], wide, out);
+        } else {
+          stack[top++] = pack(a, nb.child[l]);
+        }
+      }
     } else {
-      for (unsigned m = lanes_overlapping(na, node_box_[b].lo, node_box_[b].hi); m; m &= m - 1)
-        stack[top++] = {na.child[lowest_bit(m)], b};
+      prefetch_children(na);
+      for (unsigned m = lanes_overlapping(na, node_box_[b].lo, node_box_[b].hi); m; m &= m - 1) {
+        const int k = lowest_bit(m);
+        if ((na.leaf_kids >> k) & 1u) {
+          leaf_pairs(na.child[k], b, wide, out);
+        } else {
+          stack[top++] = pack(na.child[k], b);
+        }
+      }
     }
   }
 }

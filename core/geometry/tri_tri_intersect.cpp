@@ -5,6 +5,20 @@
 #include <algorithm>
 #include <cmath>
 
+#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
+#define TECIDO_TT_AVX512 1
+#include <immintrin.h>
+// GCC would contract a*b + c into fused multiply-adds under AVX-512 (-ffp-contract=fast is its
+// default): switch that off so the filter rounds exactly like the scalar code it mirrors.
+#if defined(__clang__)
+#define TECIDO_TT_TARGET_AVX512 __attribute__((target("avx512f")))
+#else
+#define TECIDO_TT_TARGET_AVX512 __attribute__((target("avx512f"), optimize("fp-contract=off")))
+#endif
+#else
+#define TECIDO_TT_AVX512 0
+#endif
+
 namespace tecido {
 namespace {
 
@@ -26,9 +40,10 @@ inline int gd_bracket(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d
 // (axis-aligned) configuration is subnormal: subnormal arithmetic is slow on most CPUs. The
 // three filters run without branches; a point the filter cannot decide goes to the exact
 // predicate.
+constexpr double kCoefPad = 0x1p-900;
+constexpr double kErrBound = detail::kOrient3dErrBoundA + 0x1p-100;
+
 void plane_sides(const Triangle& t, const Triangle& x, int s[3]) {
-  constexpr double kCoefPad = 0x1p-900;
-  constexpr double kErrBound = detail::kOrient3dErrBoundA + 0x1p-100;
   const double ux = t[1][0] - t[0][0], uy = t[1][1] - t[0][1], uz = t[1][2] - t[0][2];
   const double vx = t[2][0] - t[0][0], vy = t[2][1] - t[0][1], vz = t[2][2] - t[0][2];
   const double uyvz = uy * vz, uzvy = uz * vy, uzvx = uz * vx;
@@ -357,5 +372,62 @@ bool tri_tri_intersect(const Triangle& p, const Triangle& q) {
   const int b2 = gd_bracket(p1, p3, q3, q1);
   return (b1 <= 0) & (b2 <= 0);
 }
+
+bool tri_tri_reject8_available() {
+#if TECIDO_TT_AVX512
+  static const bool ok = [] {
+    __builtin_cpu_init();
+    return __builtin_cpu_supports("avx512f") != 0;
+  }();
+  return ok;
+#else
+  return false;
+#endif
+}
+
+#if TECIDO_TT_AVX512
+// plane_sides(q, p) for eight pairs, lane-wise, with the same operations in the same order
+// (differences, products, sums, the permanent and the bound); only the certified outcome
+// "all three strictly positive" or "all three strictly negative" is reported.
+namespace {
+/// Coordinate d of the eight vertices at offsets idx (3 * vertex) in x.
+TECIDO_TT_TARGET_AVX512 inline __m512d gather8(const double* x, const int (&idx)[8], int d) {
+  const __m256i i = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(idx));
+  return _mm512_mask_i32gather_pd(_mm512_setzero_pd(), 0xFF, i, x + d, 8);
+}
+}  // namespace
+
+TECIDO_TT_TARGET_AVX512 unsigned tri_tri_reject8(const double* x, const int (&pv)[3][8], const int (&qv)[3][8]) {
+  const __m512d t0x = gather8(x, qv[0], 0), t0y = gather8(x, qv[0], 1), t0z = gather8(x, qv[0], 2);
+  const __m512d ux = _mm512_sub_pd(gather8(x, qv[1], 0), t0x), uy = _mm512_sub_pd(gather8(x, qv[1], 1), t0y),
+                uz = _mm512_sub_pd(gather8(x, qv[1], 2), t0z);
+  const __m512d vx = _mm512_sub_pd(gather8(x, qv[2], 0), t0x), vy = _mm512_sub_pd(gather8(x, qv[2], 1), t0y),
+                vz = _mm512_sub_pd(gather8(x, qv[2], 2), t0z);
+  const __m512d uyvz = _mm512_mul_pd(uy, vz), uzvy = _mm512_mul_pd(uz, vy), uzvx = _mm512_mul_pd(uz, vx);
+  const __m512d uxvz = _mm512_mul_pd(ux, vz), uxvy = _mm512_mul_pd(ux, vy), uyvx = _mm512_mul_pd(uy, vx);
+  const __m512d nx = _mm512_sub_pd(uyvz, uzvy), ny = _mm512_sub_pd(uzvx, uxvz), nz = _mm512_sub_pd(uxvy, uyvx);
+  const __m512d pad = _mm512_set1_pd(kCoefPad);
+  const __m512d px = _mm512_add_pd(_mm512_add_pd(_mm512_abs_pd(uyvz), _mm512_abs_pd(uzvy)), pad);
+  const __m512d py = _mm512_add_pd(_mm512_add_pd(_mm512_abs_pd(uzvx), _mm512_abs_pd(uxvz)), pad);
+  const __m512d pz = _mm512_add_pd(_mm512_add_pd(_mm512_abs_pd(uxvy), _mm512_abs_pd(uyvx)), pad);
+  const __m512d bound = _mm512_set1_pd(kErrBound), upad = _mm512_set1_pd(detail::kUnderflowPad);
+  __mmask8 pos = 0xFF, neg = 0xFF;
+  for (int i = 0; i < 3; ++i) {
+    const __m512d wx = _mm512_sub_pd(gather8(x, pv[i], 0), t0x), wy = _mm512_sub_pd(gather8(x, pv[i], 1), t0y),
+                  wz = _mm512_sub_pd(gather8(x, pv[i], 2), t0z);
+    const __m512d det =
+        _mm512_add_pd(_mm512_add_pd(_mm512_mul_pd(wx, nx), _mm512_mul_pd(wy, ny)), _mm512_mul_pd(wz, nz));
+    const __m512d awx = _mm512_abs_pd(wx), awy = _mm512_abs_pd(wy), awz = _mm512_abs_pd(wz);
+    const __m512d permanent =
+        _mm512_add_pd(_mm512_add_pd(_mm512_mul_pd(awx, px), _mm512_mul_pd(awy, py)), _mm512_mul_pd(awz, pz));
+    const __m512d errbound = _mm512_add_pd(_mm512_mul_pd(bound, permanent), upad);
+    pos = _mm512_mask_cmp_pd_mask(pos, det, errbound, _CMP_GT_OQ);
+    neg = _mm512_mask_cmp_pd_mask(neg, _mm512_sub_pd(_mm512_setzero_pd(), det), errbound, _CMP_GT_OQ);
+  }
+  return static_cast<unsigned>(pos | neg) & 0xFFu;
+}
+#else
+unsigned tri_tri_reject8(const double*, const int (&)[3][8], const int (&)[3][8]) { return 0; }
+#endif
 
 }  // namespace tecido
