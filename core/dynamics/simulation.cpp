@@ -130,8 +130,8 @@ void Simulation::begin_step_resting(double t) {
   // Release contacts whose free acceleration pulls away or that slid off the rectangle; keep the
   // others on the plane with no normal velocity, and apply friction once per step.
   compute_accelerations(scene_.forces, springs_, p_.inv_mass, t, p_.x, p_.v, a_free_);
-  std::vector<std::pair<int, int>> kept;
-  kept.reserve(resting_.size());
+  std::vector<std::pair<int, int>>& kept = resting_scratch_;  // reused: no allocation per step
+  kept.clear();
   for (const auto& [i, k] : resting_) {
     const BoundedPlane& pl = scene_.planes[k];
     const std::size_t id = static_cast<std::size_t>(i) * n_planes_ + k;

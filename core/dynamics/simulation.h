@@ -105,6 +105,7 @@ class Simulation {
   std::vector<std::int8_t> side_;           // remembered side per (particle, plane), +1 / -1
   std::vector<std::uint8_t> resting_flag_;  // per (particle, plane)
   std::vector<std::pair<int, int>> resting_;
+  std::vector<std::pair<int, int>> resting_scratch_;  // the next step's resting_, swapped in
   std::vector<Vec3> x0_, v0_, xm_, vm_, a_free_;
   std::vector<Hit> hits_;
   bool log_contacts_ = false;
