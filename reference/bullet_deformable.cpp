@@ -14,6 +14,7 @@
 //  - explicit mode is the default and is restated every step by the world (setImplicit);
 //  - the world clamps each velocity component to m_maxDisplacement / dt (1000 m / dt).
 #include "reference/bullet_deformable.h"
+#include "reference/guarded_run.h"
 #include "reference/plane_box.h"
 
 #include <BulletCollision/BroadphaseCollision/btDbvtBroadphase.h>
@@ -353,24 +354,7 @@ std::optional<std::vector<Vec3>> run_deformable_twin(const Scene& scene, double 
   s.dt = h;
   s.integrator = IntegratorKind::Symplectic;  // the scene's own integrator is not this run's
   DeformableTwin twin(s, options);
-  const std::vector<Vec3>& x0 = scene.particles.x;
-  const double limit2 = stray_limit * stray_limit;
-  // Bullet zeroes NaN velocity increments and clamps speeds, so a blown-up run stays finite: a
-  // node far from its start is the sign. Reads the nodes through positions() (a copy) only every
-  // 64 steps, so the check costs little.
-  auto strayed = [&] {
-    const std::vector<Vec3> x = twin.positions();
-    for (std::size_t k = 0; k < x.size(); ++k)
-      if (!((x[k] - x0[k]).squaredNorm() <= limit2)) return true;
-    return false;
-  };
-  const long long n = std::llround(seconds / h);
-  for (long long i = 0; i < n; ++i) {
-    if (!twin.step()) return std::nullopt;
-    if ((i & 63) == 63 && strayed()) return std::nullopt;
-  }
-  if (strayed()) return std::nullopt;
-  return twin.positions();
+  return run_guarded(twin, scene.particles.x, std::llround(seconds / h), stray_limit);
 }
 
 std::vector<std::string> DeformableTwin::not_modelled() const { return impl_->not_modelled; }

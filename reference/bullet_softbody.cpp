@@ -14,6 +14,7 @@
 //  - CL_SS | CL_SELF never runs in 3.24 (defaultCollisionHandler switches on the combined flag
 //    value): self-collision keeps CL_SS, generates clusters and calls CollideCL_SS itself.
 #include "reference/bullet_softbody.h"
+#include "reference/guarded_run.h"
 #include "reference/plane_box.h"
 
 #include "core/dynamics/simulation.h"
@@ -320,21 +321,7 @@ std::optional<std::vector<Vec3>> run_classic_soft_body(const Scene& scene, doubl
   s.dt = h;
   s.integrator = IntegratorKind::Symplectic;  // the scene's own integrator is not this run's
   ClassicSoftBody body(s, options);
-  const std::vector<Vec3>& x0 = scene.particles.x;
-  const double limit2 = stray_limit * stray_limit;
-  auto strayed = [&] {
-    const std::vector<Vec3> x = body.positions();
-    for (std::size_t k = 0; k < x.size(); ++k)
-      if (!((x[k] - x0[k]).squaredNorm() <= limit2)) return true;
-    return false;
-  };
-  const long long n = std::llround(seconds / h);
-  for (long long i = 0; i < n; ++i) {
-    if (!body.step()) return std::nullopt;
-    if ((i & 63) == 63 && strayed()) return std::nullopt;
-  }
-  if (strayed()) return std::nullopt;
-  return body.positions();
+  return run_guarded(body, scene.particles.x, std::llround(seconds / h), stray_limit);
 }
 
 // ---- calibration ------------------------------------------------------------------------------
