@@ -289,13 +289,12 @@ StableStep step_from_json(const io::Json& j) {
 
 /// One group of extremes: {"rows":[[group, case, measured, verdict]], "checks":[...], "data":{...}}.
 io::Json extreme_case(const StabilityParams& P, std::size_t which) {
-  [[maybe_unused]] const double periods = P.periods, bound = P.bound, ratio_lo = P.ratio_lo, ratio_hi = P.ratio_hi,
-                                spread_max = P.spread_max, growth_rel = P.growth_rel, horizon_lo = P.horizon_lo,
-                                horizon_hi = P.horizon_hi, offset_ulps = P.offset_ulps,
-                                near_zero_nonfinite = P.near_zero_nonfinite, zero_force_max = P.zero_force_max,
-                                rest_sink = P.rest_sink, rest_jitter = P.rest_jitter, tunnel_wrong = P.tunnel_wrong,
-                                rel_tol = P.rel_tol;
-  [[maybe_unused]] const auto& stable_kinds = kStableKinds;
+  // The parameters the extremes use, by their names in the tolerance file's section.
+  const double periods = P.periods, bound = P.bound, ratio_lo = P.ratio_lo, ratio_hi = P.ratio_hi,
+               offset_ulps = P.offset_ulps, near_zero_nonfinite = P.near_zero_nonfinite,
+               zero_force_max = P.zero_force_max, rest_sink = P.rest_sink, rest_jitter = P.rest_jitter,
+               tunnel_wrong = P.tunnel_wrong, rel_tol = P.rel_tol;
+  const auto& stable_kinds = kStableKinds;
   std::vector<ExtremeRow> rows;
   SuiteResult res;
   io::Json data = io::Json::object();
@@ -666,13 +665,11 @@ io::Json stability_case(const StabilityParams& P, std::size_t k) {
 SuiteResult stability_assemble(const StabilityParams& P, const std::vector<io::Json>& results) {
   SuiteResult res;
   res.name = "stability";
-  [[maybe_unused]] const double periods = P.periods, bound = P.bound, ratio_lo = P.ratio_lo, ratio_hi = P.ratio_hi,
-                                spread_max = P.spread_max, growth_rel = P.growth_rel, horizon_lo = P.horizon_lo,
-                                horizon_hi = P.horizon_hi, offset_ulps = P.offset_ulps,
-                                near_zero_nonfinite = P.near_zero_nonfinite, zero_force_max = P.zero_force_max,
-                                rest_sink = P.rest_sink, rest_jitter = P.rest_jitter, tunnel_wrong = P.tunnel_wrong,
-                                rel_tol = P.rel_tol;
-  [[maybe_unused]] const auto& stable_kinds = kStableKinds;
+  // The parameters the tables and checks use, by their names in the tolerance file's section.
+  const double periods = P.periods, bound = P.bound, ratio_lo = P.ratio_lo, ratio_hi = P.ratio_hi,
+               spread_max = P.spread_max, growth_rel = P.growth_rel, horizon_lo = P.horizon_lo,
+               horizon_hi = P.horizon_hi, rel_tol = P.rel_tol;
+  const auto& stable_kinds = kStableKinds;
   const std::vector<double>& ks_list = P.ks_list;
   const std::vector<double>& m_list = P.m_list;
   io::Json data = io::Json::object();
