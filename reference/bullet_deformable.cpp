@@ -2,7 +2,7 @@
 // the tecido_bullet library with the float64 Bullet (BT_USE_DOUBLE_PRECISION, private to it).
 //
 // Set-up facts this file relies on (Bullet 3.24 as packaged by Debian 12; measured, see
-// ../shared/notes/dependencies.md):
+// docs/dependencies.md):
 //  - btDeformableMultiBodyConstraintSolver needs setDeformableSolver() or stepping segfaults;
 //  - btSoftBody must be built with the 4-argument constructor (the 1-argument one has no
 //    material and appendNode/appendLink crash);

@@ -1,7 +1,7 @@
 // The classic Bullet soft body. The only unit that includes Bullet's classic soft-body headers;
 // built in the tecido_bullet library with the float64 Bullet (BT_USE_DOUBLE_PRECISION private).
 //
-// Set-up facts this file relies on (Bullet 3.24, Debian 12; ../shared/notes/dependencies.md):
+// Set-up facts this file relies on (Bullet 3.24, Debian 12; docs/dependencies.md):
 //  - nodes are moved by btSoftBodyWorldInfo::m_gravity, which defaults to (0,-10,0) whatever the
 //    world's gravity is: both are set;
 //  - stepSimulation's default fixed step is 1/60 s: we call stepSimulation(dt, 1, dt);

@@ -1,7 +1,7 @@
 #pragma once
 /// The exact referee: triangle-triangle and segment-versus-bounded-plane answers computed with
 /// exact arithmetic (CGAL 5.5, GMP rationals) on the given doubles, taken as exact numbers. It
-/// settles disagreements between the core and the other reference engines (DESIGN.md section 1).
+/// settles disagreements between the core and the other reference engines (docs/design.md section 1).
 /// Only core types cross this header; CGAL stays inside exact_referee.cpp.
 #include "core/geometry/bounded_plane.h"
 #include "core/geometry/types.h"

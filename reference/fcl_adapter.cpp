@@ -36,7 +36,7 @@
 //  * Rejected: the default CCDC_NAIVE samples 10 poses at t = i/9 and tunnels through a
 //    zero-thickness box (a crossing at t = 0.2 was a miss); CCDC_RAY_SHOOTING is an empty stub in
 //    0.7; GST_LIBCCD gave identical answers on the same 20000 + 20000 segments (both solvers use
-//    the analytic sphere-box functions) and is not used only because dependencies.md saw it
+//    the analytic sphere-box functions) and is not used only because docs/dependencies.md saw it
 //    segfault under conservative advancement with other shapes; a Capsule(0, L) against the box
 //    with discrete collide gives no time of contact (its contact point is a GJK/EPA witness) and
 //    its booleans were wrong in trials: it missed segments lying in the plane (GST_LIBCCD),

@@ -1,5 +1,5 @@
 #pragma once
-/// The cases file of `tecido plane` (DESIGN.md section 3):
+/// The cases file of `tecido plane` (docs/design.md section 3):
 /// {"cases":[{"id":"..","plane":{...},"from":[..],"to":[..]}, ...]}. Unknown keys are ignored.
 #include "comparisons/io/json_reader.h"
 #include "core/geometry/bounded_plane.h"

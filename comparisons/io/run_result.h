@@ -1,5 +1,5 @@
 #pragma once
-/// The JSON result of a run (DESIGN.md section 3, `tecido run --json`):
+/// The JSON result of a run (docs/design.md section 3, `tecido run --json`):
 /// {"status":"ok"|"unstable","unstable_at_step":N|null,"time":T,"steps":N,
 ///  "particles":[{"x":[..],"v":[..]}],"integrator","dt","instability":{...}|null,"contacts":{...}}
 /// Numbers are printed with 17 significant digits, so the file round-trips bit for bit.

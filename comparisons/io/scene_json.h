@@ -1,5 +1,5 @@
 #pragma once
-/// Reads a scene file (DESIGN.md section 3) into a core Scene, validating every value.
+/// Reads a scene file (docs/design.md section 3) into a core Scene, validating every value.
 /// Keys (units SI; optional unless said):
 ///   integrator  "euler" | "symplectic" | "midpoint" | "rk4"   (default "symplectic", the seed's engine)
 ///   dt          step [s], required, 0 < dt <= 10

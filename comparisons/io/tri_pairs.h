@@ -1,5 +1,5 @@
 #pragma once
-/// The pairs file of `tecido tritri` (DESIGN.md section 3):
+/// The pairs file of `tecido tritri` (docs/design.md section 3):
 /// {"pairs":[{"id":"..","a":[[x,y,z],[x,y,z],[x,y,z]],"b":[[..],[..],[..]]}]}. Unknown keys
 /// (labels) are ignored. Coordinates must be finite (|x| <= 1e15).
 #include "comparisons/io/json_reader.h"

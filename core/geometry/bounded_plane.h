@@ -25,7 +25,7 @@ struct BoundedPlane {
 
   /// True when p, assumed to lie on the plane, is inside the closed rectangle:
   /// |forward.(p - position)| <= hx and |right.(p - position)| <= hy (the seed's test with
-  /// the missing lower bound added, DESIGN.md section 1).
+  /// the missing lower bound added, docs/design.md section 1).
   bool contains_projection(const Vec3& p) const {
     const Vec3 d = p - position;
     return std::abs(forward.dot(d)) <= half_extents.x() && std::abs(right().dot(d)) <= half_extents.y();

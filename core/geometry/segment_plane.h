@@ -1,6 +1,6 @@
 #pragma once
 /// Segment versus bounded plane, seed section 3.1.1 (function DETECTACOLISÃO, fig. 7), with
-/// the seed's two slips fixed (DESIGN.md section 1): a crossing needs the end points on
+/// the seed's two slips fixed (docs/design.md section 1): a crossing needs the end points on
 /// different sides (or one on the plane), and the crossing point must satisfy
 /// |forward.cp| <= hx and |right.cp| <= hy, centred on the plane's position.
 #include "core/geometry/bounded_plane.h"

@@ -1,6 +1,6 @@
 #pragma once
 /// The scene model: everything a simulation needs, in SI units. A scene models only what it
-/// names (DESIGN.md section 4): optional parts that are absent cost nothing. Loading from JSON
+/// names (docs/design.md section 4): optional parts that are absent cost nothing. Loading from JSON
 /// lives in comparisons/io (core depends on Eigen alone).
 #include "core/cloth/cloth_grid.h"
 #include "core/cloth/self_collision_settings.h"

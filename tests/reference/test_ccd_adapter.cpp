@@ -1,6 +1,6 @@
 // libccd's GJK and MPR as triangle-triangle engines. Clear-cut cases are asserted against the
 // exact referee; the flat, touching configurations where libccd is known to be unreliable
-// (dependencies.md; upstream issues #25, #51, #55) are recorded as observed, never asserted to
+// (docs/dependencies.md; upstream issues #25, #51, #55) are recorded as observed, never asserted to
 // be right: a later libccd may answer them differently and that is fine.
 #include "reference/ccd_adapter.h"
 #include "reference/exact_referee.h"

@@ -1,5 +1,5 @@
 // Suite statistics on planted inputs with known answers, and the report round trip.
-#include "cli_runner.h"
+#include "tests/support/cli_runner.h"
 #include "comparisons/suites/order_suite.h"
 #include "comparisons/suites/report.h"
 

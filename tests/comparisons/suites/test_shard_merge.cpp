@@ -1,7 +1,7 @@
 // `tecido experiment self-contact --shard i/n` and `tecido merge`: the merged shards are the
 // unsharded run's files byte for byte; inconsistent shards exit 2 with one line. Also the
 // progress bar (comparisons/io/progress.h). Quick runs of a few dt = 0.02 s cases keep it fast.
-#include "cli_runner.h"
+#include "tests/support/cli_runner.h"
 #include "comparisons/io/progress.h"
 #include "comparisons/suites/experiment_self_contact.h"
 #include "comparisons/suites/merge.h"

@@ -1,6 +1,6 @@
 // The OBJ reader (comparisons/io/obj_mesh.h) and `tecido selfcollide`: faces in all index
 // forms, quads split as documented, bad files exit 2 naming the file and the line.
-#include "cli_runner.h"
+#include "tests/support/cli_runner.h"
 #include "comparisons/io/input_error.h"
 #include "comparisons/io/obj_mesh.h"
 

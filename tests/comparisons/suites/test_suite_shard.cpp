@@ -3,7 +3,7 @@
 // wall-clock fields (a suite's seconds, tritri's ns per pair; the tradeoff suite's costs and the
 // Pareto front they decide come from the shards); inconsistent shards exit 2 with one line. Also the sweep runner's
 // independence from the thread count and the lossless JSON of doubles.
-#include "cli_runner.h"
+#include "tests/support/cli_runner.h"
 #include "comparisons/suites/random.h"
 #include "comparisons/suites/suite_shard.h"
 #include "comparisons/suites/sweep.h"

@@ -1,6 +1,6 @@
 // `tecido run` and `tecido plane` from outside: the JSON contract, overrides, and the observed
 // order of each integrator on an oscillator scene written here (not one of data/scenes).
-#include "cli_runner.h"
+#include "tests/support/cli_runner.h"
 
 #include <nlohmann/json.hpp>
 #include <gtest/gtest.h>

@@ -3,7 +3,7 @@
 // leaks), and a run killed with SIGKILL at any moment
 // leaves either no report or a complete one, never a half-written report.json / result.json
 // (comparisons/io/atomic_file.h: content goes to <target>.tmp.<pid>, then is renamed).
-#include "cli_runner.h"
+#include "tests/support/cli_runner.h"
 
 #include "core/cloth/cloth_builder.h"
 #include "core/cloth/self_collision_response.h"

@@ -1,6 +1,6 @@
 // `tecido run --out DIR`: the frames (OBJ, VTK) and the key-frame picture, the self_collision
 // scene key and its result block, and the unchanged JSON contract.
-#include "cli_runner.h"
+#include "tests/support/cli_runner.h"
 #include "comparisons/io/frame_writer.h"
 #include "comparisons/io/gnuplot.h"
 #include "comparisons/io/scene_json.h"

@@ -1,11 +1,11 @@
-// Determinism (DESIGN.md section 4): the same scene, seed and build give bit-identical results,
+// Determinism (docs/design.md section 4): the same scene, seed and build give bit-identical results,
 // whatever the thread count. Checked from outside, through the CLI:
 //  - `tecido run SCENE --json` twice per scene of data/scenes/: identical bytes on stdout, and
 //    `--out DIR` gives identical result.json bytes;
 //  - `tecido suite order|plane --quick` at --threads 1 and 2, twice each: report.json identical
 //    once the timings are removed ("seconds" and the ns-per-pair/case entries);
 //  - `tecido experiment self-contact --quick` (a subset of its runs) likewise.
-#include "cli_runner.h"
+#include "tests/support/cli_runner.h"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>

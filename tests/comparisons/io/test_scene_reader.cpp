@@ -1,6 +1,6 @@
 // Bad scene files: each exits 2 with one line on stderr naming the file, the JSON path and the
 // problem, and nothing is written. Good scenes load as written.
-#include "cli_runner.h"
+#include "tests/support/cli_runner.h"
 #include "comparisons/io/scene_json.h"
 
 #include <gtest/gtest.h>

@@ -1,6 +1,6 @@
 // `tecido experiment self-contact`: the run grid, the output contract, and bit-identical
 // output at 1 and 2 threads (quick runs, a reduced run set, so it stays fast).
-#include "cli_runner.h"
+#include "tests/support/cli_runner.h"
 #include "comparisons/suites/experiment_self_contact.h"
 
 #include <nlohmann/json.hpp>

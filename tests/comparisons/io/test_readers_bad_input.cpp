@@ -1,6 +1,6 @@
 // Bad input for the pairs, cases and tolerance readers: exit 2 (CLI) or io::InputError with the
 // file, the JSON pointer and the problem.
-#include "cli_runner.h"
+#include "tests/support/cli_runner.h"
 #include "comparisons/io/plane_cases.h"
 #include "comparisons/io/tri_pairs.h"
 #include "comparisons/suites/suite.h"

@@ -1,9 +1,9 @@
-// A cloth blown up on purpose (DESIGN.md section 4: "NaN or Inf in a state ends the run as
+// A cloth blown up on purpose (docs/design.md section 4: "NaN or Inf in a state ends the run as
 // unstable at that step"): explicit Euler, stiff springs, a big step. Explicit Euler amplifies
 // every spring mode by at least sqrt(1 + (w h)^2) per step; here w h = sqrt(ks/m) h ~ 10, so
 // the state overflows within a few hundred steps. Checked from outside, through the CLI: the
 // report says "unstable", the step, the particle and the quantity, and they are true.
-#include "cli_runner.h"
+#include "tests/support/cli_runner.h"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>

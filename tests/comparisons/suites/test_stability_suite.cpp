@@ -1,5 +1,5 @@
 // Statistics of the `stability` and `tradeoff` suites on tiny inputs with known answers.
-#include "cli_runner.h"
+#include "tests/support/cli_runner.h"
 #include "comparisons/suites/stability_suite.h"
 #include "comparisons/suites/tradeoff_suite.h"
 
