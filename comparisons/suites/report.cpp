@@ -26,6 +26,8 @@ io::Json report_json(const std::vector<SuiteResult>& results, const SuiteContext
                  {"expected", {c.lo, c.hi}},
                  {"pass", c.pass}};
       if (!c.note.empty()) j["note"] = c.note;
+      if (!c.reason.empty()) j["reason"] = c.reason;
+      if (!c.tolerance.empty()) j["tolerance"] = c.tolerance;
       checks.push_back(std::move(j));
     }
     suites.push_back({{"name", r.name}, {"checks", checks}, {"data", r.data}, {"plots", r.plots}, {"seconds", r.seconds}});
@@ -70,8 +72,10 @@ std::string report_markdown(const std::vector<SuiteResult>& results, const Suite
     for (const auto& c : r.checks)
       if (!c.pass) failing.push_back(&c);
     if (!failing.empty()) {
-      md += "Failed checks:\n\n| check | value | expected |\n|---|---:|---|\n";
-      for (const Check* c : failing) md += fmt::format("| `{}` | {:.6g} | [{:.6g}, {:.6g}] |\n", c->name, c->value, c->lo, c->hi);
+      md += "Failed checks:\n\n| check | value | expected | reason |\n|---|---:|---|---|\n";
+      for (const Check* c : failing)
+        md += fmt::format("| `{}` | {:.6g} | [{:.6g}, {:.6g}] | {} |\n", c->name, c->value, c->lo, c->hi,
+                          c->reason.empty() ? "outside the band" : c->reason);
       md += "\n";
     }
   }

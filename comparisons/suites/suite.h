@@ -1,8 +1,9 @@
 #pragma once
-/// The comparison suites: each is a name and a function that runs its cases and returns checks
-/// (value against an expected [lo, hi] band read from data/tolerances.json), a Markdown section
-/// and any plots it wrote. `tecido suite` runs them and writes report.json and report.md.
-#include "comparisons/io/json_reader.h"
+/// The comparison suites: each is a name and a function that runs its cases and returns its
+/// declared checks (check.h: value against a [lo, hi] band read from the tolerance file), a Markdown
+/// section and any plots it wrote. `tecido suite` runs them and writes report.json and report.md.
+#include "comparisons/suites/check.h"
+#include "comparisons/suites/tolerances.h"
 
 #include <cstdint>
 #include <functional>
@@ -10,35 +11,6 @@
 #include <vector>
 
 namespace tecido::suites {
-
-/// One tolerance check: pass when lo <= value <= hi (a NaN value fails).
-struct Check {
-  std::string name;  ///< "suite/what/detail"
-  double value = 0.0;
-  double lo = 0.0, hi = 0.0;
-  bool pass = false;
-  std::string note;  ///< optional, one line
-};
-
-Check make_check(std::string name, double value, double lo, double hi, std::string note = {});
-
-/// Tolerances from data/tolerances.json, looked up by JSON pointer ("/order/band").
-class Tolerances {
- public:
-  Tolerances() = default;
-  Tolerances(io::Json doc, std::string file) : doc_(std::move(doc)), file_(std::move(file)) {}
-  /// Reads and validates the file (a JSON object of objects of numbers); throws io::InputError.
-  static Tolerances load(const std::string& path);
-  /// The number at `pointer`; throws io::InputError naming the file when it is missing.
-  double get(const std::string& pointer) const;
-  const std::string& file() const { return file_; }
-  /// The whole document (a suite shard carries it to `tecido merge`).
-  const io::Json& doc() const { return doc_; }
-
- private:
-  io::Json doc_;
-  std::string file_;
-};
 
 struct SuiteContext {
   std::string out_dir;     ///< where plots and side files go

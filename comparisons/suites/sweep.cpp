@@ -1,5 +1,6 @@
 #include "comparisons/suites/sweep.h"
 
+#include "comparisons/io/input_error.h"
 #include "comparisons/io/progress.h"
 
 #include <algorithm>
@@ -48,12 +49,27 @@ std::vector<Vec3> vec3s_from_json(const io::Json& j) {
 }
 
 io::Json check_json(const Check& c) {
-  return {{"name", c.name}, {"value", num(c.value)}, {"lo", num(c.lo)}, {"hi", num(c.hi)}, {"note", c.note}};
+  return {{"name", c.name}, {"value", num(c.value)}, {"lo", num(c.lo)}, {"hi", num(c.hi)}, {"pass", c.pass},
+          {"note", c.note}, {"reason", c.reason}, {"tolerance", c.tolerance}};
 }
 
 Check check_from_json(const io::Json& j) {
-  return make_check(j.at("name").get<std::string>(), get_num(j.at("value")), get_num(j.at("lo")), get_num(j.at("hi")),
-                    j.at("note").get<std::string>());
+  Check c;
+  c.name = j.at("name").get<std::string>();
+  c.value = get_num(j.at("value"));
+  c.lo = get_num(j.at("lo"));
+  c.hi = get_num(j.at("hi"));
+  c.pass = j.at("pass").get<bool>();
+  c.note = j.at("note").get<std::string>();
+  c.reason = j.at("reason").get<std::string>();
+  c.tolerance = j.at("tolerance").get<std::string>();
+  return c;
+}
+
+const std::string* case_error(const io::Json& result) {
+  if (!result.is_object()) return nullptr;
+  const auto it = result.find("error");
+  return (it != result.end() && it->is_string() && result.size() == 1) ? &it->get_ref<const std::string&>() : nullptr;
 }
 
 std::vector<io::Json> run_sweep_cases(const Sweep& sweep, const std::vector<std::size_t>& indices, int threads,
@@ -62,22 +78,22 @@ std::vector<io::Json> run_sweep_cases(const Sweep& sweep, const std::vector<std:
   if (progress) bar = std::make_unique<io::Progress>(indices.size(), label);
   std::vector<io::Json> results(indices.size());
   std::atomic<std::size_t> next{0};
-  std::exception_ptr error;
+  std::exception_ptr input_error;  // bad input (a data file the case reads) is exit 2, not a result
   std::mutex error_mutex;
-  std::atomic<bool> failed{false};
   auto worker = [&]() {
     for (;;) {
       const std::size_t k = next.fetch_add(1);
-      if (k >= indices.size() || failed.load()) return;
+      if (k >= indices.size()) return;
       try {
         // Through the text form, exactly as a shard file carries it to `tecido merge`.
         results[k] = io::Json::parse(sweep.run_case(indices[k]).dump());
-        if (bar) bar->tick();
-      } catch (...) {
+      } catch (const io::InputError&) {
         std::lock_guard<std::mutex> lock(error_mutex);
-        if (!error) error = std::current_exception();
-        failed = true;
+        if (!input_error) input_error = std::current_exception();
+      } catch (const std::exception& e) {
+        results[k] = io::Json{{"error", std::string("case ") + std::to_string(indices[k]) + " threw: " + e.what()}};
       }
+      if (bar) bar->tick();
     }
   };
   const int n = std::max(1, std::min<int>(threads, static_cast<int>(indices.size())));
@@ -86,7 +102,7 @@ std::vector<io::Json> run_sweep_cases(const Sweep& sweep, const std::vector<std:
   worker();
   for (auto& t : pool) t.join();
   if (bar) bar->finish();
-  if (error) std::rethrow_exception(error);
+  if (input_error) std::rethrow_exception(input_error);
   return results;
 }
 

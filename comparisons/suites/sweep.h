@@ -10,6 +10,8 @@
 ///    write files and may be called from several threads at once;
 ///  - `assemble(results)`: every case's result, in index order, into the SuiteResult (checks,
 ///    Markdown, data; plots and side files written under ctx.out_dir).
+/// A case that throws does not end the suite: its result becomes {"error": "<what>"} (case_error()
+/// tells), and assemble fails the checks that case would have fed, with that reason (check.h).
 /// Results always travel through their JSON text (also in an unsharded run), so an unsharded run
 /// and the merge of its shards assemble bit-identical values: nlohmann::json writes a double in
 /// its shortest round-trip form, and num()/get_num() carry NaN and infinities, which JSON lacks.
@@ -43,10 +45,12 @@ double get_num(const io::Json& j);
 io::Json vec3s_json(const std::vector<Vec3>& xs);
 std::vector<Vec3> vec3s_from_json(const io::Json& j);
 
-/// A check as JSON {"name","value","lo","hi","note"} (lossless), and back (pass recomputed by
-/// make_check).
+/// A check as JSON {"name","value","lo","hi","note","reason","tolerance"} (lossless), and back.
 io::Json check_json(const Check& c);
 Check check_from_json(const io::Json& j);
+
+/// The error of a case that threw ({"error": "..."}), or nullptr for a case that produced a result.
+const std::string* case_error(const io::Json& result);
 
 /// Runs the cases `indices` of `sweep` on up to `threads` threads (workers take the next index from
 /// a shared counter; each result goes to its own slot, so the output does not depend on the thread

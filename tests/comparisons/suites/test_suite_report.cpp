@@ -1,6 +1,7 @@
 // Suite statistics on planted inputs with known answers, and the report round trip.
 #include "tests/support/cli_runner.h"
-#include "comparisons/suites/order_suite.h"
+#include "comparisons/suites/order/order_fit.h"
+#include "comparisons/suites/order/order_suite.h"
 #include "comparisons/suites/report.h"
 
 #include <gtest/gtest.h>

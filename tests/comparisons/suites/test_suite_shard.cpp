@@ -140,7 +140,7 @@ TEST(SuiteShard, InconsistentShardsExitTwo) {
   EXPECT_FALSE(std::filesystem::exists(dir / "never"));
 
   // Usage: a suite that is not split into cases, a bad shard.
-  for (const std::string args : {"suite order --quick --shard 0/2", "suite stability --quick --shard 2/2",
+  for (const std::string args : {"suite bench --quick --shard 0/2", "suite stability --quick --shard 2/2",
                                  "suite stability --quick --shard 1"}) {
     const auto r = run_cli(args + " --out " + q(dir / "never"));
     EXPECT_EQ(r.code, 2) << args << ": " << r.err;

@@ -1,12 +1,7 @@
 #pragma once
-/// Suite `order`: the observed global error order of each integrator on problems with analytic
-/// solutions (harmonic oscillator, damped oscillator, projectile with linear drag, two free
-/// particles joined by a spring), by step halving, with a fitted slope over the asymptotic
-/// range the suite finds itself, and the seed's own question: Euler versus midpoint at equal
-/// step and at equal cost.
-#include "comparisons/suites/suite.h"
-#include "core/dynamics/integrator.h"
-
+/// The observed order of convergence of a sequence of errors at halving steps, fitted over the
+/// range where it follows a power law (the asymptotic range), which the fit finds itself.
+#include <cmath>
 #include <vector>
 
 namespace tecido::suites {
@@ -23,10 +18,9 @@ struct OrderFit {
 /// Finds the asymptotic range in errors `e` at steps `h` (h halving each index): errors must be
 /// finite, below `too_big` (instability or pre-asymptotic) and above `floor` (round-off); the
 /// range is the longest run of consecutive halvings whose observed orders differ by at most
-/// `agree` from one halving to the next, at least `min_halvings` long.
+/// `agree` from one halving to the next, at least `min_halvings` long. The slope is NaN when no
+/// such range exists.
 OrderFit fit_order(const std::vector<double>& h, const std::vector<double>& e, double floor, double too_big,
                    double agree = 0.1, int min_halvings = 3);
-
-SuiteResult run_order_suite(const SuiteContext& ctx);
 
 }  // namespace tecido::suites

@@ -1,19 +1,8 @@
-#include "comparisons/suites/suite.h"
+#include "comparisons/suites/tolerances.h"
 
-#include <cmath>
+#include "comparisons/io/input_error.h"
 
 namespace tecido::suites {
-
-Check make_check(std::string name, double value, double lo, double hi, std::string note) {
-  Check c;
-  c.name = std::move(name);
-  c.value = value;
-  c.lo = lo;
-  c.hi = hi;
-  c.pass = std::isfinite(value) ? (value >= lo && value <= hi) : false;
-  c.note = std::move(note);
-  return c;
-}
 
 Tolerances Tolerances::load(const std::string& path) {
   io::Json doc = io::read_json_file(path);
@@ -44,6 +33,21 @@ double Tolerances::get(const std::string& pointer) const {
   if (!v) throw io::InputError(file_, pointer, "missing tolerance");
   if (!v->is_number()) throw io::InputError(file_, pointer, "expected a number");
   return v->get<double>();
+}
+
+Band Tolerances::at_most(const std::string& pointer, double scale) const {
+  return Band{0.0, get(pointer) * scale, pointer};
+}
+
+Band Tolerances::at_least(const std::string& pointer, double hi) const { return Band{get(pointer), hi, pointer}; }
+
+Band Tolerances::around(const std::string& pointer, double center) const {
+  const double w = get(pointer);
+  return Band{center - w, center + w, pointer};
+}
+
+Band Tolerances::between(const std::string& lo_pointer, const std::string& hi_pointer) const {
+  return Band{get(lo_pointer), get(hi_pointer), lo_pointer + " " + hi_pointer};
 }
 
 }  // namespace tecido::suites

@@ -1,0 +1,31 @@
+#pragma once
+/// One interface for every engine that steps a core Scene's particles and springs: core itself
+/// (comparisons/engines/core_dynamics.h), Bullet's deformable world and classic soft body
+/// (bullet_deformable.h, bullet_softbody.h), and outside engines. Suites drive them alike: step,
+/// read positions and velocities in core's numbering, and list what the scene asks for that the
+/// engine does not model, so a difference in modelling is reported, never hidden.
+#include "core/geometry/types.h"
+
+#include <string>
+#include <vector>
+
+namespace tecido::reference {
+
+class DynamicsEngine {
+ public:
+  virtual ~DynamicsEngine() = default;
+  /// Advances one step of the scene's dt. Returns false when the state stopped being finite (or
+  /// the engine failed); later calls do nothing and return false.
+  virtual bool step() = 0;
+  /// Node positions [m] and velocities [m/s] in core's numbering (node i = scene particle i).
+  virtual std::vector<Vec3> positions() const = 0;
+  virtual std::vector<Vec3> velocities() const = 0;
+  /// Scene features this engine does not reproduce, one line each ("<feature>: <why>"); empty
+  /// when it models the whole scene.
+  virtual std::vector<std::string> not_modelled() const = 0;
+  /// Simulated time [s] and steps done.
+  virtual double time() const = 0;
+  virtual long long steps_done() const = 0;
+};
+
+}  // namespace tecido::reference
