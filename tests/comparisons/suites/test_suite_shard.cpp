@@ -5,6 +5,8 @@
 // independence from the thread count and the lossless JSON of doubles.
 #include "tests/support/cli_runner.h"
 #include "comparisons/suites/random.h"
+#include "comparisons/io/input_error.h"
+#include "comparisons/suites/report.h"
 #include "comparisons/suites/suite_shard.h"
 #include "comparisons/suites/sweep.h"
 
@@ -248,14 +250,75 @@ TEST(Sweep, ResultsDoNotDependOnThreadsOrShards) {
   EXPECT_EQ(joined, one);
 }
 
-TEST(Sweep, ACaseErrorIsRethrown) {
+TEST(Sweep, ACaseErrorBecomesItsResultAndBadInputEndsTheRun) {
   Sweep s;
   s.cases = 5;
   s.run_case = [](std::size_t k) -> io::Json {
     if (k == 3) throw std::runtime_error("case 3 broke");
     return k;
   };
-  EXPECT_THROW(run_sweep_cases(s, {0, 1, 2, 3, 4}, 2, "t", false), std::runtime_error);
+  const std::vector<io::Json> r = run_sweep_cases(s, {0, 1, 2, 3, 4}, 2, "t", false);
+  ASSERT_EQ(r.size(), 5u);
+  for (std::size_t k : {0u, 1u, 2u, 4u}) {
+    EXPECT_EQ(r[k], io::Json(k));
+    EXPECT_EQ(case_error(r[k]), nullptr);
+  }
+  ASSERT_NE(case_error(r[3]), nullptr);
+  EXPECT_NE(case_error(r[3])->find("case 3 broke"), std::string::npos) << *case_error(r[3]);
+
+  // A data file the case reads that is bad is the user's input: exit 2, not a failed check.
+  s.run_case = [](std::size_t k) -> io::Json {
+    if (k == 1) throw io::InputError("scene.json", "/dt", "expected a number");
+    return k;
+  };
+  EXPECT_THROW(run_sweep_cases(s, {0, 1, 2}, 2, "t", false), io::InputError);
+}
+
+TEST(CheckList, EveryDeclaredCheckIsReportedAndAMissingValueFails) {
+  Tolerances tol(io::Json::parse(R"({"s":{"max":2.0,"lo":0.5,"hi":1.5,"w":0.1}})"), "tol.json");
+  CheckList checks;
+  checks.declare("s/a", tol.at_most("/s/max"));
+  checks.declare("s/b", tol.between("/s/lo", "/s/hi"));
+  checks.declare("s/c", tol.around("/s/w", 4.0));
+  checks.declare("s/group/d", tol.at_least("/s/lo", 1.0));
+  checks.declare("s/group/e", tol.at_least("/s/lo", 1.0));
+  checks.declare("s/f", tol.at_most("/s/max", 3.0));
+  EXPECT_THROW(checks.declare("s/a", tol.at_most("/s/max")), std::logic_error);
+  checks.set("s/a", 1.0);
+  checks.set("s/b", std::nan(""));
+  checks.fail("s/c", "unstable at step 12");
+  checks.fail_pending("s/group/", "case 3 threw: boom");
+  EXPECT_THROW(checks.set("s/a", 1.0), std::logic_error);
+  EXPECT_THROW(checks.set("s/undeclared", 1.0), std::logic_error);
+  const std::vector<Check> c = checks.finish();
+  ASSERT_EQ(c.size(), 6u);
+  EXPECT_TRUE(c[0].pass);
+  EXPECT_EQ(c[0].tolerance, "/s/max");
+  EXPECT_FALSE(c[1].pass);
+  EXPECT_EQ(c[1].reason, "value is NaN");
+  EXPECT_FALSE(c[2].pass);
+  EXPECT_EQ(c[2].reason, "unstable at step 12");
+  EXPECT_DOUBLE_EQ(c[2].lo, 3.9);
+  EXPECT_DOUBLE_EQ(c[2].hi, 4.1);
+  EXPECT_FALSE(c[3].pass);
+  EXPECT_FALSE(c[4].pass);
+  EXPECT_EQ(c[4].reason, "case 3 threw: boom");
+  EXPECT_FALSE(c[5].pass);
+  EXPECT_EQ(c[5].reason, "not produced");
+  EXPECT_DOUBLE_EQ(c[5].hi, 6.0);
+  // The report keeps all six and says why each failed.
+  SuiteResult r;
+  r.name = "s";
+  r.checks = c;
+  SuiteContext ctx;
+  ctx.tolerances = &tol;
+  const io::Json j = report_json({r}, ctx);
+  ASSERT_EQ(j["suites"][0]["checks"].size(), 6u);
+  EXPECT_TRUE(j["suites"][0]["checks"][1]["value"].is_null());
+  EXPECT_EQ(j["suites"][0]["checks"][5]["reason"], "not produced");
+  const std::string md = report_markdown({r}, ctx);
+  EXPECT_NE(md.find("unstable at step 12"), std::string::npos);
+  EXPECT_NE(md.find("not produced"), std::string::npos);
 }
 
 TEST(Sweep, DoublesRoundTripThroughText) {
