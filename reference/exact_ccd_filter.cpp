@@ -1,0 +1,273 @@
+// The certified floating-point filter of the exact CCD referee. Every number is a pair (v, e):
+// the exact quantity lies in [v - e, v + e]. Error bounds follow the standard model of IEEE
+// round-to-nearest, |fl(x op y) - x op y| <= u |fl(x op y)| + eta (u = 2^-53, eta = 2^-1074 for
+// results in the subnormal range; additions never underflow), and the bound's own rounding is
+// covered by a factor (1 + 8u) and an absolute 4 eta (see up()). An overflow makes v or e
+// infinite and a NaN fails every comparison: both make a sign uncertain, never wrong.
+#include "reference/exact_ccd_filter.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <vector>
+
+namespace tecido::reference {
+namespace {
+
+constexpr double kU = 0x1p-53;
+constexpr double kEta = 0x1p-1074;
+
+/// A bound computed in floating point, enlarged so that it bounds the exact bound: the few
+/// roundings of its computation (relative u each, fewer than 7) and underflows (eta each).
+double up(double x) { return x * (1 + 8 * kU) + 4 * kEta; }
+
+struct Fe {
+  double v = 0, e = 0;
+};
+Fe exact(double x) { return {x, 0}; }
+Fe operator+(Fe a, Fe b) {
+  const double v = a.v + b.v;
+  return {v, up(a.e + b.e + kU * std::fabs(v))};
+}
+Fe operator-(Fe a, Fe b) {
+  const double v = a.v - b.v;
+  return {v, up(a.e + b.e + kU * std::fabs(v))};
+}
+Fe operator*(Fe a, Fe b) {
+  const double v = a.v * b.v;
+  return {v, up(std::fabs(a.v) * b.e + std::fabs(b.v) * a.e + a.e * b.e + kU * std::fabs(v) + kEta)};
+}
+Fe third(Fe a) {
+  const double v = a.v / 3;
+  return {v, up(a.e / 3 + kU * std::fabs(v) + kEta)};
+}
+/// +1 or -1 when the sign is proven, 0 when it is not (including every exact zero).
+int sign(Fe a) { return a.v > a.e ? 1 : (-a.v > a.e ? -1 : 0); }
+
+struct FeV {
+  Fe x, y, z;
+};
+FeV operator-(const FeV& a, const FeV& b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
+FeV cross(const FeV& a, const FeV& b) {
+  return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
+}
+Fe dot(const FeV& a, const FeV& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+Fe det(const FeV& a, const FeV& b, const FeV& c) { return dot(cross(a, b), c); }
+FeV exact(const Vec3& p) { return {exact(p.x()), exact(p.y()), exact(p.z())}; }
+
+/// A time t = a + b: an interval (b = 0, a.e its radius), a double, or a double plus a double
+/// (the midpoint of two adjacent doubles).
+struct Time {
+  Fe a, b;
+};
+
+/// The four points at time t, x0 + t (x1 - x0).
+std::array<FeV, 4> positions(const CcdQuery& q, const Time& t) {
+  std::array<FeV, 4> out;
+  const bool at_end = t.a.e == 0 && t.b.v == 0 && t.b.e == 0 && (t.a.v == 0 || t.a.v == 1);
+  for (int i = 0; i < 4; ++i) {
+    if (at_end) {  // the given points, without rounding
+      out[i] = exact(t.a.v == 0 ? q.x0[i] : q.x1[i]);
+      continue;
+    }
+    const FeV p0 = exact(q.x0[i]);
+    const FeV d = exact(q.x1[i]) - p0;
+    auto at = [&](Fe FeV::*c) {
+      Fe r = p0.*c + t.a * (d.*c);
+      if (t.b.v != 0 || t.b.e != 0) r = r + t.b * (d.*c);
+      return r;
+    };
+    out[i] = {at(&FeV::x), at(&FeV::y), at(&FeV::z)};
+  }
+  return out;
+}
+
+/// The three vectors whose determinant is the coplanarity cubic f: vertex-face (b - a, c - a,
+/// p - a) with p = x[0]; edge-edge (a1 - a0, b1 - b0, b0 - a0).
+std::array<FeV, 3> cubic_vectors(const CcdQuery& q, const std::array<FeV, 4>& x) {
+  if (q.kind == CcdKind::VertexFace) return {x[2] - x[1], x[3] - x[1], x[0] - x[1]};
+  return {x[1] - x[0], x[3] - x[2], x[2] - x[0]};
+}
+
+Fe cubic_at(const CcdQuery& q, const Time& t) {
+  const auto u = cubic_vectors(q, positions(q, t));
+  return det(u[0], u[1], u[2]);
+}
+
+/// +1: the closed primitives touch at every t of `t` at which they are coplanar; -1: they touch
+/// at none of them; 0: not proven. Vertex-face: with n = (b-a) x (c-a), the vertex is in the
+/// closed triangle iff ((v-u) x (p-u)) . n >= 0 for the three edges u -> v (a zero normal makes
+/// all three zero, so a proven sign implies n != 0). Edge-edge: with m = da x db, w = b0 - a0,
+/// the crossing parameters are (w x db).m / m.m and (w x da).m / m.m, both in [0, 1].
+int touches_on(const CcdQuery& q, const Time& t) {
+  const auto x = positions(q, t);
+  std::array<Fe, 4> s;
+  int count = 3;
+  if (q.kind == CcdKind::VertexFace) {
+    const FeV &p = x[0], &a = x[1], &b = x[2], &c = x[3];
+    const FeV n = cross(b - a, c - a);
+    s = {dot(cross(b - a, p - a), n), dot(cross(c - b, p - b), n), dot(cross(a - c, p - c), n), Fe{}};
+  } else {
+    const FeV da = x[1] - x[0], db = x[3] - x[2], w = x[2] - x[0];
+    const FeV m = cross(da, db);
+    const Fe mm = dot(m, m), nu = dot(cross(w, db), m), nv = dot(cross(w, da), m);
+    s = {nu, mm - nu, nv, mm - nv};
+    count = 4;
+  }
+  int positive = 0;
+  for (int i = 0; i < count; ++i) {
+    const int sg = sign(s[static_cast<std::size_t>(i)]);
+    if (sg < 0) return -1;
+    positive += sg > 0;
+  }
+  return positive == count ? 1 : 0;
+}
+
+/// Whether the swept bounding boxes of the two primitives are disjoint (exact comparisons).
+bool boxes_disjoint(const CcdQuery& q) {
+  const int first_b = q.kind == CcdKind::VertexFace ? 1 : 2;
+  for (int k = 0; k < 3; ++k) {
+    double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
+    for (int i = 0; i < 4; ++i)
+      for (const auto* x : {&q.x0, &q.x1}) {
+        const int side = i < first_b ? 0 : 1;
+        lo[side] = std::min(lo[side], (*x)[i][k]);
+        hi[side] = std::max(hi[side], (*x)[i][k]);
+      }
+    if (hi[0] < lo[1] || hi[1] < lo[0]) return true;
+  }
+  return false;
+}
+
+/// The cubic's Bernstein coefficients on [0, 1] (multilinear expansion of the determinant).
+std::array<Fe, 4> bernstein(const CcdQuery& q) {
+  const auto u0 = cubic_vectors(q, positions(q, Time{exact(0), {}}));
+  const auto u1 = cubic_vectors(q, positions(q, Time{exact(1), {}}));
+  auto d = [&](int i, int j, int k) {
+    return det((i ? u1 : u0)[0], (j ? u1 : u0)[1], (k ? u1 : u0)[2]);
+  };
+  return {d(0, 0, 0), third(d(1, 0, 0) + d(0, 1, 0) + d(0, 0, 1)),
+          third(d(0, 1, 1) + d(1, 0, 1) + d(1, 1, 0)), d(1, 1, 1)};
+}
+
+bool one_strict_sign(const std::array<Fe, 4>& b) {
+  int s = sign(b[0]);
+  if (s == 0) return false;
+  for (const Fe& x : b)
+    if (sign(x) != s) return false;
+  return true;
+}
+
+/// An interval (l, r) holding exactly one simple root of the cubic; sign_l = sign of f(l).
+struct RootInterval {
+  double l, r;
+  int sign_l;
+};
+
+/// Appends, left to right, intervals isolating the cubic's roots in (l, r) from its Bernstein
+/// coefficients there. False when it cannot prove the isolation within the depth limit.
+bool isolate(const std::array<Fe, 4>& b, double l, double r, int depth, std::vector<RootInterval>& out) {
+  if (one_strict_sign(b)) return true;
+  const int s0 = sign(b[0]), s3 = sign(b[3]);
+  const int d0 = sign(b[1] - b[0]), d1 = sign(b[2] - b[1]), d2 = sign(b[3] - b[2]);
+  if (s0 != 0 && s3 != 0 && d0 != 0 && d0 == d1 && d1 == d2) {  // strictly monotone
+    if (s0 != s3) out.push_back({l, r, s0});
+    return true;
+  }
+  if (depth == 12) return false;
+  // de Casteljau at s = 7/16 of the interval: the left part's coefficients are b0, b01, b012,
+  // b0123, the right's b0123, b123, b23, b3. Not at 1/2, where hand-made roots (1/2, 1/4, ...)
+  // would land on a split point and leave its sign unproven; 7/16 keeps every split point a
+  // double (a multiple of 2^-48 after 12 levels).
+  const Fe s{7.0 / 16, 0}, s1{9.0 / 16, 0};
+  auto mix = [&](Fe x, Fe y) { return x * s1 + y * s; };
+  const Fe b01 = mix(b[0], b[1]), b12 = mix(b[1], b[2]), b23 = mix(b[2], b[3]);
+  const Fe b012 = mix(b01, b12), b123 = mix(b12, b23), mid = mix(b012, b123);
+  const double m = l + (r - l) * (7.0 / 16);  // exact (see above)
+  return isolate({b[0], b01, b012, mid}, l, m, depth + 1, out) &&
+         isolate({mid, b123, b23, b[3]}, m, r, depth + 1, out);
+}
+
+/// The interval (l, r) as a time: midpoint and a radius covering both ends.
+Time interval(double l, double r) {
+  const double m = 0.5 * (l + r);
+  return Time{Fe{m, up(std::max(m - l, r - m))}, {}};
+}
+
+/// Narrows `ri` at a double strictly inside it where the cubic's sign is proven (tried at 7/16
+/// and 9/16 of the interval, off the dyadic points where hand-made roots sit); false if neither.
+bool narrow(const CcdQuery& q, RootInterval& ri) {
+  for (double f : {7.0 / 16, 9.0 / 16}) {
+    const double m = ri.l + (ri.r - ri.l) * f;
+    if (!(ri.l < m && m < ri.r)) continue;
+    const int s = sign(cubic_at(q, Time{exact(m), {}}));
+    if (s == 0) continue;
+    (s == ri.sign_l ? ri.l : ri.r) = m;
+    return true;
+  }
+  return false;
+}
+
+/// Narrows `ri` until touches_on decides it; 0 when it cannot.
+int decide_root(const CcdQuery& q, RootInterval& ri) {
+  for (int iter = 0; iter < 100; ++iter) {
+    const int verdict = touches_on(q, interval(ri.l, ri.r));
+    if (verdict != 0 || !narrow(q, ri)) return verdict;
+  }
+  return 0;
+}
+
+std::uint64_t bits(double x) {
+  std::uint64_t b;
+  std::memcpy(&b, &x, sizeof b);
+  return b;
+}
+double from_bits(std::uint64_t b) {
+  double x;
+  std::memcpy(&x, &b, sizeof x);
+  return x;
+}
+
+/// The verdict for a hit whose time is the root in `ri`: the root narrowed between doubles by
+/// bisection on their bit patterns (monotone for non-negative doubles) while the cubic's sign is
+/// proven; once they are adjacent, rounded by the sign at their exact midpoint l + (r - l)/2.
+CcdFilterVerdict hit_verdict(const CcdQuery& q, const RootInterval& ri) {
+  CcdFilterVerdict v;
+  v.kind = CcdFilterVerdict::Kind::Hit;
+  v.sign_lo = ri.sign_l;
+  std::uint64_t lo = bits(ri.l), hi = bits(ri.r);
+  while (hi - lo > 1) {
+    const std::uint64_t mid = lo + (hi - lo) / 2;
+    const int s = sign(cubic_at(q, Time{exact(from_bits(mid)), {}}));
+    if (s == 0) break;
+    (s == ri.sign_l ? lo : hi) = mid;
+  }
+  v.lo = from_bits(lo);
+  v.hi = from_bits(hi);
+  const double h = 0.5 * (v.hi - v.lo);
+  if (hi - lo == 1 && h != 0 && 2 * h == v.hi - v.lo) {  // a double midpoint (not subnormal spacing)
+    const int s = sign(cubic_at(q, Time{exact(v.lo), exact(h)}));
+    if (s != 0) v.toi = s == ri.sign_l ? v.hi : v.lo;  // same sign as at lo: the root is past the midpoint
+  }
+  return v;
+}
+
+}  // namespace
+
+CcdFilterVerdict certified_float_ccd(const CcdQuery& q) {
+  CcdFilterVerdict miss;
+  miss.kind = CcdFilterVerdict::Kind::Miss;
+  if (boxes_disjoint(q)) return miss;
+  const std::array<Fe, 4> b = bernstein(q);
+  std::vector<RootInterval> roots;
+  if (!isolate(b, 0.0, 1.0, 0, roots)) return {};
+  for (RootInterval& ri : roots) {
+    const int verdict = decide_root(q, ri);
+    if (verdict == 0) return {};
+    if (verdict > 0) return hit_verdict(q, ri);
+  }
+  return miss;
+}
+
+}  // namespace tecido::reference
