@@ -44,6 +44,35 @@
 //    missed a crossing at a 1e-6 scale (GST_INDEP); a degenerate triangle (p1, p2, p2) against a
 //    two-triangle BVHModel gives only a boolean and inherits fcl_tri_tri's missing in-plane axis
 //    for segments (false hits for segments in the plane passing a corner).
+//
+// Continuous vertex-face and edge-edge (fcl_ccd): FCL's Intersect<double>::intersect_VF and
+// intersect_EE (intersect-inl.h), called as they are, with useNewton = true. What they do, read
+// from FCL 0.7.0:
+//  * velocities v = x1 - x0; cubic coefficients a t^3 + b t^2 + c t + d of the triple product
+//    (computeCubicCoeff_VF/EE); if |a|, |b|, |c|, |d| are all below getNearZeroThreshold() =
+//    1e-7 the call returns false at once: coplanar-throughout motion (the 2-D problem) is never
+//    a contact, nor is any query whose coordinates are small enough (coefficients scale with
+//    length^3, so below a length scale of about 5e-3 everything is a miss), nor a
+//    near-degenerate one;
+//  * solveCubicWithIntervalNewton on [0, 1]: bounds the cubic on the interval from the
+//    coefficients' signs, discards intervals whose bounds do not straddle 0, narrows by a Newton
+//    step when the derivative's bounds exclude 0, bisects left half first, and once the interval
+//    is narrower than getCcdResolution() = 1e-7 accepts it if checkRootValidity holds at its
+//    right end r; collision_time = (l + r) / 2. So toi is the midpoint of the first accepted
+//    1e-7 interval; a root exactly at t = 1 can be missed (its interval's right end is 1 only if
+//    the bisection lands there) and a root at t = 0 is found by its right end ~1e-7;
+//  * vertex-face validity (insideTriangle): with n = (b-a) x (c-a), each of the three triple
+//    products ((b-p) x (c-p)).n etc. must be >= -getEpsilon() = -1e-5 (absolute, unnormalised:
+//    at unit scale a vertex up to ~1e-5 outside an edge counts as inside; a degenerate triangle,
+//    n = 0, accepts every vertex in its plane);
+//  * edge-edge validity (linelineIntersect): false when either edge's vector has every component
+//    below 1e-5 in magnitude (short or zero-length edges never collide) or when the squared
+//    sine-like denominator |d12|^2 |d34|^2 - (d12.d34)^2 < 1e-5 (parallel and collinear edges
+//    never collide); otherwise the closest points' parameters must lie in [0, 1]; their
+//    distance is not checked (the cubic's root makes the lines nearly coplanar).
+// Nothing here is repaired; tests/reference/test_fcl_ccd.cpp records FCL's answers on
+// degenerate cases and asserts only agreement on ordinary, clearly separated or clearly hitting
+// queries.
 #include "reference/fcl_adapter.h"
 
 #include <fcl/geometry/bvh/BVH_model.h>
@@ -164,6 +193,24 @@ std::optional<SegmentPlaneHit> fcl_segment_plane(const BoundedPlane& plane, cons
   fcl::collide(&point, to, &box, identity, end_request, end_result);
   if (end_result.isCollision()) return SegmentPlaneHit{true, 1.0};
   return SegmentPlaneHit{false, 0.0};
+}
+
+CcdAnswer fcl_ccd(const CcdQuery& q) {
+  const auto& x0 = q.x0;
+  const auto& x1 = q.x1;
+  for (std::size_t i = 0; i < 4; ++i)
+    if (!x0[i].allFinite() || !x1[i].allFinite()) throw std::domain_error("fcl_ccd: non-finite coordinate");
+  double t = 2.0;
+  fcl::Vector3d p_i = fcl::Vector3d::Zero();
+  bool hit = false;
+  if (q.kind == CcdKind::VertexFace)
+    hit = fcl::detail::Intersect<double>::intersect_VF(x0[1], x0[2], x0[3], x0[0], x1[1], x1[2], x1[3], x1[0], &t,
+                                                       &p_i, /*useNewton=*/true);
+  else
+    hit = fcl::detail::Intersect<double>::intersect_EE(x0[0], x0[1], x0[2], x0[3], x1[0], x1[1], x1[2], x1[3], &t,
+                                                       &p_i, /*useNewton=*/true);
+  if (!hit) return CcdAnswer{false, 0.0};
+  return CcdAnswer{true, t};
 }
 
 }  // namespace tecido::reference

@@ -3,6 +3,7 @@
 /// segment-versus-bounded-plane engine. Only core types cross this header; FCL stays inside
 /// fcl_adapter.cpp.
 #include "core/geometry/bounded_plane.h"
+#include "core/geometry/ccd_query.h"
 #include "core/geometry/segment_plane.h"
 #include "core/geometry/types.h"
 
@@ -48,5 +49,25 @@ std::vector<std::pair<int, int>> fcl_self_collision(const std::vector<Vec3>& ver
 /// Returns std::nullopt when FCL cannot answer: a non-finite input, a negative half extent, or
 /// FCL reporting an unsupported query.
 std::optional<SegmentPlaneHit> fcl_segment_plane(const BoundedPlane& plane, const Vec3& p1, const Vec3& p2);
+
+/// FCL's continuous vertex-face or edge-edge test (engine name `fcl`):
+/// fcl::detail::Intersect<double>::intersect_VF(a0, b0, c0, p0, a1, b1, c1, p1, &t, &p_i, true)
+/// (triangle corners first, then the vertex, at t = 0 and then t = 1) and
+/// intersect_EE(a0, b0, c0, d0, a1, b1, c1, d1, &t, &p_i, true) (edges a-b and c-d), from
+/// fcl/narrowphase/detail/traversal/collision/intersect.h: the coplanarity cubic of Provot 1997
+/// (Tang et al. 2009, eq. 1) in floating point, roots searched by interval Newton bisection
+/// over [0, 1], left half first (useNewton = true, FCL's default; with false FCL takes the
+/// first valid root of its closed-form cubic solver in the solver's order, not the earliest),
+/// down to intervals narrower than 1e-7, the first accepted one giving toi, its midpoint. A root
+/// is accepted when, at the interval's right end, the vertex passes an in-triangle test with
+/// absolute tolerance 1e-5 on unnormalised triple products, or the two lines' closest points
+/// lie within both segments (no distance check; lines whose direction vectors are shorter than
+/// 1e-5 per component or nearly parallel, |cross|^2 < 1e-5, are rejected).
+/// Known behaviour (not repaired; fcl_adapter.cpp): when all four cubic coefficients are below
+/// 1e-7 in magnitude (coplanar-throughout motion, or any query at a scale below ~5e-3) FCL
+/// reports no contact; tolerances are absolute, so answers depend on the scene's scale; toi is
+/// accurate to about 1e-7. Returns hit = false with toi = 0 for a miss. Throws
+/// std::domain_error if a coordinate is NaN or infinite.
+CcdAnswer fcl_ccd(const CcdQuery& q);
 
 }  // namespace tecido::reference
