@@ -48,26 +48,26 @@ void trim(Poly& p) {
 int degree(const Poly& p) { return static_cast<int>(p.c.size()) - 1; }
 bool is_zero(const Poly& p) { return p.c.empty(); }
 
-Poly operator+(const Poly& a, const Poly& b) {
-  Poly r;
-  r.c.resize(std::max(a.c.size(), b.c.size()));
-  for (std::size_t i = 0; i < r.c.size(); ++i)
-    r.c[i] = (i < a.c.size() ? a.c[i] : Z(0)) + (i < b.c.size() ? b.c[i] : Z(0));
-  trim(r);
-  return r;
+// (In-place GMP calls below avoid temporaries: allocation dominates the cost at these sizes.)
+Poly operator+(Poly a, const Poly& b) {
+  if (a.c.size() < b.c.size()) a.c.resize(b.c.size());
+  for (std::size_t i = 0; i < b.c.size(); ++i) mpz_add(a.c[i].get_mpz_t(), a.c[i].get_mpz_t(), b.c[i].get_mpz_t());
+  trim(a);
+  return a;
 }
-Poly operator-(const Poly& a) {
-  Poly r = a;
-  for (Z& x : r.c) x = -x;
-  return r;
+Poly operator-(Poly a, const Poly& b) {
+  if (a.c.size() < b.c.size()) a.c.resize(b.c.size());
+  for (std::size_t i = 0; i < b.c.size(); ++i) mpz_sub(a.c[i].get_mpz_t(), a.c[i].get_mpz_t(), b.c[i].get_mpz_t());
+  trim(a);
+  return a;
 }
-Poly operator-(const Poly& a, const Poly& b) { return a + (-b); }
 Poly operator*(const Poly& a, const Poly& b) {
   if (is_zero(a) || is_zero(b)) return {};
   Poly r;
-  r.c.assign(a.c.size() + b.c.size() - 1, Z(0));
+  r.c.resize(a.c.size() + b.c.size() - 1);
   for (std::size_t i = 0; i < a.c.size(); ++i)
-    for (std::size_t j = 0; j < b.c.size(); ++j) r.c[i + j] += a.c[i] * b.c[j];
+    for (std::size_t j = 0; j < b.c.size(); ++j)
+      mpz_addmul(r.c[i + j].get_mpz_t(), a.c[i].get_mpz_t(), b.c[j].get_mpz_t());
   trim(r);
   return r;
 }
@@ -146,8 +146,9 @@ int sign_at(const Poly& p, const Q& t) {
   const Z& den = t.get_den();
   Z v = p.c.back(), power = den;
   for (int i = degree(p) - 1; i >= 0; --i) {
-    v = v * num + p.c[static_cast<std::size_t>(i)] * power;
-    power *= den;
+    mpz_mul(v.get_mpz_t(), v.get_mpz_t(), num.get_mpz_t());
+    mpz_addmul(v.get_mpz_t(), p.c[static_cast<std::size_t>(i)].get_mpz_t(), power.get_mpz_t());
+    if (i > 0) mpz_mul(power.get_mpz_t(), power.get_mpz_t(), den.get_mpz_t());
   }
   return sgn(v);
 }
@@ -268,18 +269,16 @@ bool vanishes_at(const Poly& d, const Root& r) {
   return degree(d) >= 1 && sign_at(d, r.lo) != sign_at(d, r.hi);
 }
 
-/// The sign of h at the root, refining the root's interval as needed.
+/// The sign of h at the root, refining the root's interval as needed (a zero is recognised by
+/// the common factor, looked for after two refinements: most signs are not zero).
 int sign_at(const Poly& h, Root& r) {
   if (is_zero(h)) return 0;
-  if (r.exact) return sign_at(h, r.lo);
-  int s = strict_sign(bernstein_signs(h, r.lo, r.hi));
-  if (s != 0) return s;
-  if (vanishes_at(gcd(*r.g, h), r)) return 0;
-  for (int i = 0; i < kMaxRefinements; ++i) {  // h(root) != 0: terminates
-    bisect(r);
+  for (int i = 0; i < kMaxRefinements; ++i) {  // terminates: a non-zero sign shows on a small interval
     if (r.exact) return sign_at(h, r.lo);
-    s = strict_sign(bernstein_signs(h, r.lo, r.hi));
+    const int s = strict_sign(bernstein_signs(h, r.lo, r.hi));
     if (s != 0) return s;
+    if (i == 2 && vanishes_at(gcd(*r.g, h), r)) return 0;
+    bisect(r);
   }
   throw std::logic_error("exact_ccd: sign refinement did not terminate");
 }
@@ -428,21 +427,41 @@ Q parse_rational(const RationalCoord& c) {
   return q;
 }
 
-/// The rationals as integers: all multiplied by the lcm of their denominators.
-IntQuery integer_query(const RationalCcdQuery& q) {
-  std::array<std::array<Q, 3>, 8> v;
-  Z lcm = 1;
+/// The 24 coordinates of a rational query, parsed: [0..3] at t = 0, [4..7] at t = 1.
+using RationalPoints = std::array<std::array<Q, 3>, 8>;
+
+RationalPoints parse_query(const RationalCcdQuery& q) {
+  RationalPoints v;
   for (std::size_t s = 0; s < 8; ++s)
-    for (std::size_t k = 0; k < 3; ++k) {
-      v[s][k] = parse_rational(s < 4 ? q.x0[s][k] : q.x1[s - 4][k]);
-      mpz_lcm(lcm.get_mpz_t(), lcm.get_mpz_t(), v[s][k].get_den().get_mpz_t());
-    }
+    for (std::size_t k = 0; k < 3; ++k) v[s][k] = parse_rational(s < 4 ? q.x0[s][k] : q.x1[s - 4][k]);
+  return v;
+}
+
+/// The rationals as integers: all multiplied by the lcm of their denominators.
+IntQuery integer_query(CcdKind kind, const RationalPoints& v) {
+  Z lcm = 1;
+  for (const auto& p : v)
+    for (const Q& c : p) mpz_lcm(lcm.get_mpz_t(), lcm.get_mpz_t(), c.get_den().get_mpz_t());
   IntQuery out;
-  out.kind = q.kind;
+  out.kind = kind;
   for (std::size_t s = 0; s < 8; ++s)
     for (std::size_t k = 0; k < 3; ++k)
       (s < 4 ? out.x0[s] : out.x1[s - 4])[k] = v[s][k].get_num() * (lcm / v[s][k].get_den());
   return out;
+}
+
+/// q as a double when it is exactly one: a power-of-two denominator (canonical form), an odd
+/// part of at most 53 bits, and exponents within the double range (subnormals included).
+std::optional<double> exact_double(const Q& q) {
+  const Z& num = q.get_num();
+  const Z& den = q.get_den();
+  if (num == 0) return 0.0;
+  if (mpz_popcount(den.get_mpz_t()) != 1) return std::nullopt;
+  const long k = static_cast<long>(mpz_scan1(den.get_mpz_t(), 0));             // den = 2^k
+  const long low = static_cast<long>(mpz_scan1(num.get_mpz_t(), 0)) - k;         // lowest bit's exponent
+  const long high = static_cast<long>(mpz_sizeinbase(num.get_mpz_t(), 2)) - 1 - k;  // highest bit's
+  if (high - low >= 53 || low < -1074 || high > 1023) return std::nullopt;
+  return q.get_d();  // exact: q is representable
 }
 
 /// The double nearest to q (ties to even, +-infinity past the largest double).
@@ -598,18 +617,35 @@ ExactCcd solve(const IntQuery& q) {
   return t->exact ? answer_at(t->lo) : answer_at(*t);
 }
 
+/// The answer for the only root of f in (lo, hi) (doubles, f(lo) of sign sign_lo, f(hi) of the
+/// other): bisection on the bit patterns of doubles with exact signs, then the exact sign at the
+/// midpoint of the two adjacent doubles around the root.
+ExactCcd answer_between(const Poly& f, double lo, double hi, int sign_lo) {
+  std::uint64_t a = bits(lo), b = bits(hi);
+  while (b - a > 1) {
+    const std::uint64_t mid = a + (b - a) / 2;
+    const Q t(from_bits(mid));
+    const int s = sign_at(f, t);
+    if (s == 0) return answer_at(t);
+    (s == sign_lo ? a : b) = mid;
+  }
+  ExactCcd out;
+  out.hit = true;
+  out.toi_lo = from_bits(a);
+  out.toi_hi = from_bits(b);
+  const int s = sign_at(f, Q((Q(out.toi_lo) + Q(out.toi_hi)) / 2));
+  out.toi = s == 0 ? ((a & 1) ? out.toi_hi : out.toi_lo) : s == sign_lo ? out.toi_hi : out.toi_lo;
+  return out;
+}
+
 /// The answer for a hit proven by the filter: t* is the only root of the cubic in (lo, hi); only
 /// its rounding is left, done exactly. Falls back to the full solution if the filter's signs are
 /// not the exact ones (a filter defect; never observed).
 ExactCcd finish_hit(const CcdQuery& q, const CcdFilterVerdict& v) {
   const IntQuery iq = integer_query(q);
-  Root r;
-  r.g = std::make_shared<const Poly>(coplanarity_cubic(iq.kind, moving_points(iq)));
-  r.lo = Q(v.lo);
-  r.hi = Q(v.hi);
-  r.sign_lo = sign_at(*r.g, r.lo);
-  if (r.sign_lo != v.sign_lo || sign_at(*r.g, r.hi) != -v.sign_lo) return solve(iq);
-  return answer_at(r);
+  const Poly f = coplanarity_cubic(iq.kind, moving_points(iq));
+  if (sign_at(f, Q(v.lo)) != v.sign_lo || sign_at(f, Q(v.hi)) != -v.sign_lo) return solve(iq);
+  return answer_between(f, v.lo, v.hi, v.sign_lo);
 }
 
 }  // namespace
@@ -641,19 +677,19 @@ ExactCcd exact_ccd(const CcdQuery& q) {
 ExactCcd exact_ccd_unfiltered(const CcdQuery& q) { return solve(integer_query(q)); }
 
 ExactCcd exact_ccd(const RationalCcdQuery& q) {
-  bool all_doubles = true;
-  for (const auto* x : {&q.x0, &q.x1})
-    for (const auto& p : *x)
-      for (const RationalCoord& c : p) all_doubles = all_doubles && is_exact_double(c);
-  if (all_doubles) return exact_ccd(nearest_double_query(q));  // the same numbers; filtered
-  return solve(integer_query(q));
+  const RationalPoints v = parse_query(q);
+  CcdQuery d;  // the same numbers as doubles, when they all are: filtered
+  d.kind = q.kind;
+  for (std::size_t s = 0; s < 8; ++s)
+    for (std::size_t k = 0; k < 3; ++k) {
+      const std::optional<double> x = exact_double(v[s][k]);
+      if (!x) return solve(integer_query(q.kind, v));
+      (s < 4 ? d.x0[s] : d.x1[s - 4])[static_cast<Eigen::Index>(k)] = *x;
+    }
+  return exact_ccd(d);
 }
 
-bool is_exact_double(const RationalCoord& c) {
-  const Q q = parse_rational(c);
-  const double d = nearest(q);
-  return std::isfinite(d) && Q(d) == q;
-}
+bool is_exact_double(const RationalCoord& c) { return exact_double(parse_rational(c)).has_value(); }
 
 double nearest_double(const RationalCoord& c) { return nearest(parse_rational(c)); }
 

@@ -56,29 +56,19 @@ Fe dot(const FeV& a, const FeV& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
 Fe det(const FeV& a, const FeV& b, const FeV& c) { return dot(cross(a, b), c); }
 FeV exact(const Vec3& p) { return {exact(p.x()), exact(p.y()), exact(p.z())}; }
 
-/// A time t = a + b: an interval (b = 0, a.e its radius), a double, or a double plus a double
-/// (the midpoint of two adjacent doubles).
-struct Time {
-  Fe a, b;
-};
-
-/// The four points at time t, x0 + t (x1 - x0).
-std::array<FeV, 4> positions(const CcdQuery& q, const Time& t) {
+/// The four points at time t (an interval or a double), x0 + t (x1 - x0); the given points
+/// themselves, unrounded, at t = 0 and t = 1.
+std::array<FeV, 4> positions(const CcdQuery& q, Fe t) {
   std::array<FeV, 4> out;
-  const bool at_end = t.a.e == 0 && t.b.v == 0 && t.b.e == 0 && (t.a.v == 0 || t.a.v == 1);
-  for (int i = 0; i < 4; ++i) {
-    if (at_end) {  // the given points, without rounding
-      out[i] = exact(t.a.v == 0 ? q.x0[i] : q.x1[i]);
+  const bool at_end = t.e == 0 && (t.v == 0 || t.v == 1);
+  for (std::size_t i = 0; i < 4; ++i) {
+    const FeV p0 = exact(q.x0[i]);
+    if (at_end) {
+      out[i] = t.v == 0 ? p0 : exact(q.x1[i]);
       continue;
     }
-    const FeV p0 = exact(q.x0[i]);
     const FeV d = exact(q.x1[i]) - p0;
-    auto at = [&](Fe FeV::*c) {
-      Fe r = p0.*c + t.a * (d.*c);
-      if (t.b.v != 0 || t.b.e != 0) r = r + t.b * (d.*c);
-      return r;
-    };
-    out[i] = {at(&FeV::x), at(&FeV::y), at(&FeV::z)};
+    out[i] = {p0.x + t * d.x, p0.y + t * d.y, p0.z + t * d.z};
   }
   return out;
 }
@@ -90,17 +80,12 @@ std::array<FeV, 3> cubic_vectors(const CcdQuery& q, const std::array<FeV, 4>& x)
   return {x[1] - x[0], x[3] - x[2], x[2] - x[0]};
 }
 
-Fe cubic_at(const CcdQuery& q, const Time& t) {
-  const auto u = cubic_vectors(q, positions(q, t));
-  return det(u[0], u[1], u[2]);
-}
-
 /// +1: the closed primitives touch at every t of `t` at which they are coplanar; -1: they touch
 /// at none of them; 0: not proven. Vertex-face: with n = (b-a) x (c-a), the vertex is in the
 /// closed triangle iff ((v-u) x (p-u)) . n >= 0 for the three edges u -> v (a zero normal makes
 /// all three zero, so a proven sign implies n != 0). Edge-edge: with m = da x db, w = b0 - a0,
 /// the crossing parameters are (w x db).m / m.m and (w x da).m / m.m, both in [0, 1].
-int touches_on(const CcdQuery& q, const Time& t) {
+int touches_on(const CcdQuery& q, Fe t) {
   const auto x = positions(q, t);
   std::array<Fe, 4> s;
   int count = 3;
@@ -142,13 +127,25 @@ bool boxes_disjoint(const CcdQuery& q) {
 
 /// The cubic's Bernstein coefficients on [0, 1] (multilinear expansion of the determinant).
 std::array<Fe, 4> bernstein(const CcdQuery& q) {
-  const auto u0 = cubic_vectors(q, positions(q, Time{exact(0), {}}));
-  const auto u1 = cubic_vectors(q, positions(q, Time{exact(1), {}}));
+  const auto u0 = cubic_vectors(q, positions(q, exact(0)));
+  const auto u1 = cubic_vectors(q, positions(q, exact(1)));
   auto d = [&](int i, int j, int k) {
     return det((i ? u1 : u0)[0], (j ? u1 : u0)[1], (k ? u1 : u0)[2]);
   };
   return {d(0, 0, 0), third(d(1, 0, 0) + d(0, 1, 0) + d(0, 0, 1)),
           third(d(0, 1, 1) + d(1, 0, 1) + d(1, 1, 0)), d(1, 1, 1)};
+}
+
+/// The cubic at t = t1 + t2 (doubles in [0, 1]) from its Bernstein coefficients on [0, 1]
+/// (de Casteljau: x (1 - t) + y t = x + (y - x) t1 + (y - x) t2).
+Fe cubic_at(const std::array<Fe, 4>& b, double t1, double t2 = 0) {
+  auto mix = [&](Fe x, Fe y) {
+    const Fe d = y - x;
+    Fe r = x + d * exact(t1);
+    return t2 == 0 ? r : r + d * exact(t2);
+  };
+  const Fe b01 = mix(b[0], b[1]), b12 = mix(b[1], b[2]), b23 = mix(b[2], b[3]);
+  return mix(mix(b01, b12), mix(b12, b23));
 }
 
 bool one_strict_sign(const std::array<Fe, 4>& b) {
@@ -190,18 +187,18 @@ bool isolate(const std::array<Fe, 4>& b, double l, double r, int depth, std::vec
 }
 
 /// The interval (l, r) as a time: midpoint and a radius covering both ends.
-Time interval(double l, double r) {
+Fe interval(double l, double r) {
   const double m = 0.5 * (l + r);
-  return Time{Fe{m, up(std::max(m - l, r - m))}, {}};
+  return Fe{m, up(std::max(m - l, r - m))};
 }
 
 /// Narrows `ri` at a double strictly inside it where the cubic's sign is proven (tried at 7/16
 /// and 9/16 of the interval, off the dyadic points where hand-made roots sit); false if neither.
-bool narrow(const CcdQuery& q, RootInterval& ri) {
+bool narrow(const std::array<Fe, 4>& b, RootInterval& ri) {
   for (double f : {7.0 / 16, 9.0 / 16}) {
     const double m = ri.l + (ri.r - ri.l) * f;
     if (!(ri.l < m && m < ri.r)) continue;
-    const int s = sign(cubic_at(q, Time{exact(m), {}}));
+    const int s = sign(cubic_at(b, m));
     if (s == 0) continue;
     (s == ri.sign_l ? ri.l : ri.r) = m;
     return true;
@@ -210,10 +207,10 @@ bool narrow(const CcdQuery& q, RootInterval& ri) {
 }
 
 /// Narrows `ri` until touches_on decides it; 0 when it cannot.
-int decide_root(const CcdQuery& q, RootInterval& ri) {
+int decide_root(const CcdQuery& q, const std::array<Fe, 4>& b, RootInterval& ri) {
   for (int iter = 0; iter < 100; ++iter) {
     const int verdict = touches_on(q, interval(ri.l, ri.r));
-    if (verdict != 0 || !narrow(q, ri)) return verdict;
+    if (verdict != 0 || !narrow(b, ri)) return verdict;
   }
   return 0;
 }
@@ -232,14 +229,14 @@ double from_bits(std::uint64_t b) {
 /// The verdict for a hit whose time is the root in `ri`: the root narrowed between doubles by
 /// bisection on their bit patterns (monotone for non-negative doubles) while the cubic's sign is
 /// proven; once they are adjacent, rounded by the sign at their exact midpoint l + (r - l)/2.
-CcdFilterVerdict hit_verdict(const CcdQuery& q, const RootInterval& ri) {
+CcdFilterVerdict hit_verdict(const std::array<Fe, 4>& b, const RootInterval& ri) {
   CcdFilterVerdict v;
   v.kind = CcdFilterVerdict::Kind::Hit;
   v.sign_lo = ri.sign_l;
   std::uint64_t lo = bits(ri.l), hi = bits(ri.r);
   while (hi - lo > 1) {
     const std::uint64_t mid = lo + (hi - lo) / 2;
-    const int s = sign(cubic_at(q, Time{exact(from_bits(mid)), {}}));
+    const int s = sign(cubic_at(b, from_bits(mid)));
     if (s == 0) break;
     (s == ri.sign_l ? lo : hi) = mid;
   }
@@ -247,7 +244,7 @@ CcdFilterVerdict hit_verdict(const CcdQuery& q, const RootInterval& ri) {
   v.hi = from_bits(hi);
   const double h = 0.5 * (v.hi - v.lo);
   if (hi - lo == 1 && h != 0 && 2 * h == v.hi - v.lo) {  // a double midpoint (not subnormal spacing)
-    const int s = sign(cubic_at(q, Time{exact(v.lo), exact(h)}));
+    const int s = sign(cubic_at(b, v.lo, h));
     if (s != 0) v.toi = s == ri.sign_l ? v.hi : v.lo;  // same sign as at lo: the root is past the midpoint
   }
   return v;
@@ -263,9 +260,9 @@ CcdFilterVerdict certified_float_ccd(const CcdQuery& q) {
   std::vector<RootInterval> roots;
   if (!isolate(b, 0.0, 1.0, 0, roots)) return {};
   for (RootInterval& ri : roots) {
-    const int verdict = decide_root(q, ri);
+    const int verdict = decide_root(q, b, ri);
     if (verdict == 0) return {};
-    if (verdict > 0) return hit_verdict(q, ri);
+    if (verdict > 0) return hit_verdict(b, ri);
   }
   return miss;
 }

@@ -531,7 +531,34 @@ TEST(ExactCcdRational, RoundingToDoublesCanChangeTheAnswer) {
   EXPECT_EQ(rounded.toi, 0.5);
 }
 
+/// 2^n * m in decimal (schoolbook doubling; m small).
+std::string pow2_times(int n, unsigned long long m) {
+  std::string d = std::to_string(m);
+  for (int i = 0; i < n; ++i) {
+    int carry = 0;
+    for (auto it = d.rbegin(); it != d.rend(); ++it) {
+      const int v = (*it - '0') * 2 + carry;
+      *it = static_cast<char>('0' + v % 10);
+      carry = v / 10;
+    }
+    if (carry) d.insert(d.begin(), static_cast<char>('0' + carry));
+  }
+  return d;
+}
+
 TEST(ExactCcdRational, DoublesAndNearestDoubles) {
+  // The ends of the double range: 2^-1074 (the smallest subnormal), (2^53 - 1) 2^971 (the largest).
+  EXPECT_TRUE(is_exact_double({"1", pow2_times(1074, 1)}));
+  EXPECT_FALSE(is_exact_double({"1", pow2_times(1075, 1)}));
+  EXPECT_EQ(nearest_double({"1", pow2_times(1074, 1)}), 0x1p-1074);
+  EXPECT_EQ(nearest_double({"1", pow2_times(1075, 1)}), 0.0);  // a tie, to even
+  EXPECT_EQ(nearest_double({"3", pow2_times(1076, 1)}), 0x1p-1074);
+  EXPECT_TRUE(is_exact_double({pow2_times(971, (1ULL << 53) - 1), "1"}));
+  EXPECT_EQ(nearest_double({pow2_times(971, (1ULL << 53) - 1), "1"}), std::numeric_limits<double>::max());
+  EXPECT_FALSE(is_exact_double({pow2_times(972, (1ULL << 53) - 1), "1"}));
+  EXPECT_EQ(nearest_double({pow2_times(972, (1ULL << 53) - 1), "1"}), std::numeric_limits<double>::infinity());
+  EXPECT_FALSE(is_exact_double({pow2_times(0, (1ULL << 53) + 1), "2"}));  // 54 significant bits
+
   EXPECT_TRUE(is_exact_double({"3", "4"}));
   EXPECT_TRUE(is_exact_double({"-6004799503160661", "36028797018963968"}));
   EXPECT_FALSE(is_exact_double({"1", "3"}));
