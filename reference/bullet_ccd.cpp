@@ -15,7 +15,7 @@
 //        separated from triangles that sweep right through it.
 //     b. the cubic's coefficients in floating point (independent of dt); all four below
 //        SAFE_EPSILON (absolute): roots {0, dt}; then a quadratic or linear fallback by the same
-//        absolute threshold, else SolveP3 (poly34.cpp, closed form). Roots sorted. SolveP3 has a
+//        absolute threshold, else SolveP3 (Bullet's poly34, closed form). Roots sorted. SolveP3 has a
 //        defect: when q = (a^2 - 3b)/9 < 0 (the cubic is strictly monotone, one real root) it
 //        sets q = SIMD_EPSILON and returns a wrong root, so such contacts are missed (measured: 84
 //        of 434 contacts among 20000 random unit-scale queries; none invented);

@@ -265,9 +265,7 @@ std::vector<Root> roots_in_unit_interval(const Poly& p) {
 
 /// Whether the (square-free part of the) divisor d of r.g vanishes at r: d then has one simple
 /// root in r's interval or none, told by its signs at the ends.
-bool vanishes_at(const Poly& d, const Root& r) {
-  return degree(d) >= 1 && sign_at(d, r.lo) != sign_at(d, r.hi);
-}
+bool vanishes_at(const Poly& d, const Root& r) { return degree(d) >= 1 && sign_at(d, r.lo) != sign_at(d, r.hi); }
 
 /// The sign of h at the root, refining the root's interval as needed (a zero is recognised by
 /// the common factor, looked for after two refinements: most signs are not zero).
@@ -306,8 +304,7 @@ int compare(Root& a, Root& b) {
     if (b.exact) return compare(a, b.lo);
     if (a.hi <= b.lo) return -1;
     if (b.hi <= a.lo) return 1;
-    if (maybe_equal && variations(bernstein_signs(d, std::min(a.lo, b.lo), std::max(a.hi, b.hi))) == 1)
-      return 0;
+    if (maybe_equal && variations(bernstein_signs(d, std::min(a.lo, b.lo), std::max(a.hi, b.hi))) == 1) return 0;
     bisect(a);
     bisect(b);
   }
@@ -395,7 +392,8 @@ IntQuery integer_query(const CcdQuery& q) {
       if (!std::isfinite(x)) throw std::domain_error("exact_ccd: non-finite coordinate");
       int e = 0;
       const double m = std::frexp(x, &e);
-      me[static_cast<std::size_t>(s)][static_cast<std::size_t>(k)] = {static_cast<std::int64_t>(std::ldexp(m, 53)), e - 53L};
+      me[static_cast<std::size_t>(s)][static_cast<std::size_t>(k)] = {static_cast<std::int64_t>(std::ldexp(m, 53)),
+                                                                      e - 53L};
       if (x != 0) e_min = std::min(e_min, e - 53L);
     }
   IntQuery out;
@@ -457,8 +455,8 @@ std::optional<double> exact_double(const Q& q) {
   const Z& den = q.get_den();
   if (num == 0) return 0.0;
   if (mpz_popcount(den.get_mpz_t()) != 1) return std::nullopt;
-  const long k = static_cast<long>(mpz_scan1(den.get_mpz_t(), 0));             // den = 2^k
-  const long low = static_cast<long>(mpz_scan1(num.get_mpz_t(), 0)) - k;         // lowest bit's exponent
+  const long k = static_cast<long>(mpz_scan1(den.get_mpz_t(), 0));                  // den = 2^k
+  const long low = static_cast<long>(mpz_scan1(num.get_mpz_t(), 0)) - k;            // lowest bit's exponent
   const long high = static_cast<long>(mpz_sizeinbase(num.get_mpz_t(), 2)) - 1 - k;  // highest bit's
   if (high - low >= 53 || low < -1074 || high > 1023) return std::nullopt;
   return q.get_d();  // exact: q is representable
@@ -488,9 +486,7 @@ struct PV {
   Poly x, y, z;
 };
 PV operator-(const PV& a, const PV& b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
-PV cross(const PV& a, const PV& b) {
-  return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
-}
+PV cross(const PV& a, const PV& b) { return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x}; }
 Poly dot(const PV& a, const PV& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
 
 std::array<PV, 4> moving_points(const IntQuery& q) {
@@ -607,8 +603,8 @@ std::optional<Root> earliest_edge_edge(const IntQuery& q) {
   if (!is_zero(f)) return first_root_touching(f, touches);
   Root zero = rational_root(Q(0));
   if (touches(zero)) return zero;
-  return earliest_of({earliest_on_segment(a0, b0, b1), earliest_on_segment(a1, b0, b1),
-                      earliest_on_segment(b0, a0, a1), earliest_on_segment(b1, a0, a1)});
+  return earliest_of({earliest_on_segment(a0, b0, b1), earliest_on_segment(a1, b0, b1), earliest_on_segment(b0, a0, a1),
+                      earliest_on_segment(b1, a0, a1)});
 }
 
 ExactCcd solve(const IntQuery& q) {

@@ -49,9 +49,7 @@ struct FeV {
   Fe x, y, z;
 };
 FeV operator-(const FeV& a, const FeV& b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
-FeV cross(const FeV& a, const FeV& b) {
-  return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
-}
+FeV cross(const FeV& a, const FeV& b) { return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x}; }
 Fe dot(const FeV& a, const FeV& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
 Fe det(const FeV& a, const FeV& b, const FeV& c) { return dot(cross(a, b), c); }
 FeV exact(const Vec3& p) { return {exact(p.x()), exact(p.y()), exact(p.z())}; }
@@ -129,11 +127,9 @@ bool boxes_disjoint(const CcdQuery& q) {
 std::array<Fe, 4> bernstein(const CcdQuery& q) {
   const auto u0 = cubic_vectors(q, positions(q, exact(0)));
   const auto u1 = cubic_vectors(q, positions(q, exact(1)));
-  auto d = [&](int i, int j, int k) {
-    return det((i ? u1 : u0)[0], (j ? u1 : u0)[1], (k ? u1 : u0)[2]);
-  };
-  return {d(0, 0, 0), third(d(1, 0, 0) + d(0, 1, 0) + d(0, 0, 1)),
-          third(d(0, 1, 1) + d(1, 0, 1) + d(1, 1, 0)), d(1, 1, 1)};
+  auto d = [&](int i, int j, int k) { return det((i ? u1 : u0)[0], (j ? u1 : u0)[1], (k ? u1 : u0)[2]); };
+  return {d(0, 0, 0), third(d(1, 0, 0) + d(0, 1, 0) + d(0, 0, 1)), third(d(0, 1, 1) + d(1, 0, 1) + d(1, 1, 0)),
+          d(1, 1, 1)};
 }
 
 /// The cubic at t = t1 + t2 (doubles in [0, 1]) from its Bernstein coefficients on [0, 1]
@@ -182,8 +178,7 @@ bool isolate(const std::array<Fe, 4>& b, double l, double r, int depth, std::vec
   const Fe b01 = mix(b[0], b[1]), b12 = mix(b[1], b[2]), b23 = mix(b[2], b[3]);
   const Fe b012 = mix(b01, b12), b123 = mix(b12, b23), mid = mix(b012, b123);
   const double m = l + (r - l) * (7.0 / 16);  // exact (see above)
-  return isolate({b[0], b01, b012, mid}, l, m, depth + 1, out) &&
-         isolate({mid, b123, b23, b[3]}, m, r, depth + 1, out);
+  return isolate({b[0], b01, b012, mid}, l, m, depth + 1, out) && isolate({mid, b123, b23, b[3]}, m, r, depth + 1, out);
 }
 
 /// The interval (l, r) as a time: midpoint and a radius covering both ends.

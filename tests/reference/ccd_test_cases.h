@@ -28,8 +28,7 @@ inline CcdQuery make(CcdKind kind, const std::array<Vec3, 4>& x0, const std::arr
 
 /// The query whose points are at `at` at time t and move with velocities v over [0, 1]:
 /// x0 = at - t v, x1 = at + (1 - t) v.
-inline CcdQuery moving_through(CcdKind kind, double t, const std::array<Vec3, 4>& at,
-                               const std::array<Vec3, 4>& v) {
+inline CcdQuery moving_through(CcdKind kind, double t, const std::array<Vec3, 4>& at, const std::array<Vec3, 4>& v) {
   CcdQuery q;
   q.kind = kind;
   for (std::size_t i = 0; i < 4; ++i) {
@@ -48,7 +47,7 @@ inline Vec3 dyadic_vec(std::mt19937& rng, int range = 64) {
 /// Whether the displacement has a non-zero component along each of Bullet's 13 k-DOP directions
 /// (bullet_ccd.h: a vertex at rest along one of them is never hit by Bullet).
 inline bool generic_for_bullet(const Vec3& d) {
-  const double dirs[13][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1},  {1, 1, 0},  {1, 0, 1},  {0, 1, 1},  {1, -1, 0},
+  const double dirs[13][3] = {{1, 0, 0},  {0, 1, 0},  {0, 0, 1}, {1, 1, 0},  {1, 0, 1},  {0, 1, 1},  {1, -1, 0},
                               {1, 0, -1}, {0, 1, -1}, {1, 1, 1}, {1, -1, 1}, {1, 1, -1}, {1, -1, -1}};
   for (const auto& k : dirs)
     if (std::fabs(d.x() * k[0] + d.y() * k[1] + d.z() * k[2]) < 1.0 / 16) return false;

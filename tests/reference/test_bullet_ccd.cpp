@@ -40,10 +40,12 @@ TEST(BulletCcd, EdgeEdgeAndNonFiniteInputAreNotAnswered) {
 // by the window bisection to within SIMD_EPSILON below it.
 TEST(BulletCcd, AgreesWithExactOnClearQueries) {
   std::mt19937 rng(21);
-  const std::array<std::array<double, 3>, 4> bary{{{0.25, 0.25, 0.5}, {0.125, 0.5, 0.375}, {-0.25, 0.5, 0.75}, {0.5, 0.75, -0.25}}};
+  const std::array<std::array<double, 3>, 4> bary{
+      {{0.25, 0.25, 0.5}, {0.125, 0.5, 0.375}, {-0.25, 0.5, 0.75}, {0.5, 0.75, -0.25}}};
   int hits = 0;
   for (int i = 0; i < 400; ++i) {
-    const ccd_cases::Known k = ccd_cases::vf_translation(rng, (2 + i % 5) / 8.0, bary[static_cast<std::size_t>(i % 4)], true);
+    const ccd_cases::Known k =
+        ccd_cases::vf_translation(rng, (2 + i % 5) / 8.0, bary[static_cast<std::size_t>(i % 4)], true);
     const ExactCcd e = exact_ccd(k.q);
     ASSERT_EQ(e.hit, k.hit);
     const std::optional<CcdAnswer> b = bullet_ccd(k.q);
@@ -127,7 +129,7 @@ TEST(BulletCcd, RecordsDegenerateCases) {
   record("vf_triangle_collapsing_to_segment", collapse);
   // Random queries (points in [-1, 1]^3, displacements in [-1/2, 1/2]^3): Bullet misses some of
   // the contacts (7 of 55 in these 2000 queries; 84 of 434 in 20000) because its cubic solver
-  // SolveP3 (poly34.cpp) replaces a negative q = (a^2 - 3b)/9 by SIMD_EPSILON and so returns a
+  // SolveP3 (Bullet's poly34) replaces a negative q = (a^2 - 3b)/9 by SIMD_EPSILON and so returns a
   // wrong single real root for strictly monotone cubics; no false positives were seen.
   std::mt19937 rng(99);
   std::uniform_real_distribution<double> d(-1, 1), d2(-0.5, 0.5);
@@ -144,7 +146,8 @@ TEST(BulletCcd, RecordsDegenerateCases) {
     invented += b && !e;
   }
   ::testing::Test::RecordProperty("random_vf_2000", "contacts " + std::to_string(contacts) + ", bullet missed " +
-                                                        std::to_string(missed) + ", invented " + std::to_string(invented));
+                                                        std::to_string(missed) + ", invented " +
+                                                        std::to_string(invented));
 }
 
 }  // namespace

@@ -52,9 +52,9 @@ CcdQuery vertex_down_through(double x, double y) {
 /// The sign of a t^2 + b t + c at the double t in (0, 1), exactly (t = M 2^-e, integers in 128 bits).
 int sign_quadratic(double t, long a, long b, long c) {
   int e = 0;
-  const double m = std::frexp(t, &e);  // t = m 2^e, m in [0.5, 1)
+  const double m = std::frexp(t, &e);                           // t = m 2^e, m in [0.5, 1)
   const __int128 M = static_cast<__int128>(std::ldexp(m, 53));  // t = M 2^(e - 53)
-  const int s = 53 - e;                                           // t = M / 2^s, s <= 60 here
+  const int s = 53 - e;                                         // t = M / 2^s, s <= 60 here
   const __int128 v = a * M * M + b * M * (static_cast<__int128>(1) << s) + c * (static_cast<__int128>(1) << (2 * s));
   return (v > 0) - (v < 0);
 }
@@ -284,13 +284,13 @@ TEST(ExactCcdEdgeEdge, ZeroLengthEdges) {
 
 TEST(ExactCcdEdgeEdge, ContactAtStartAndEnd) {
   // Crossing at t = 0, then B rises: f = 4 z, z = t.
-  expect_hit_at(make(kEE, {Vec3(-1, 0, 0), X, Vec3(0, -1, 0), Vec3(0, 1, 0)},
-                     {Vec3(-1, 0, 0), X, Vec3(0, -1, 1), Vec3(0, 1, 1)}),
-                0.0);
+  expect_hit_at(
+      make(kEE, {Vec3(-1, 0, 0), X, Vec3(0, -1, 0), Vec3(0, 1, 0)}, {Vec3(-1, 0, 0), X, Vec3(0, -1, 1), Vec3(0, 1, 1)}),
+      0.0);
   // Reaching A at t = 1.
-  expect_hit_at(make(kEE, {Vec3(-1, 0, 0), X, Vec3(0, -1, 1), Vec3(0, 1, 1)},
-                     {Vec3(-1, 0, 0), X, Vec3(0, -1, 0), Vec3(0, 1, 0)}),
-                1.0);
+  expect_hit_at(
+      make(kEE, {Vec3(-1, 0, 0), X, Vec3(0, -1, 1), Vec3(0, 1, 1)}, {Vec3(-1, 0, 0), X, Vec3(0, -1, 0), Vec3(0, 1, 0)}),
+      1.0);
 }
 
 TEST(ExactCcdEdgeEdge, HugeAndTinyScales) {
@@ -329,7 +329,8 @@ TEST(ExactCcdConstructed, TranslationsHitAtTheChosenTime) {
     } else {
       expect_miss(vf.q);
     }
-    const std::array<std::array<double, 2>, 6> uv{{{0.5, 0.5}, {0, 0.25}, {1, 1}, {-w, 0.5}, {0.5, 1 + w}, {1 + w, -w}}};
+    const std::array<std::array<double, 2>, 6> uv{
+        {{0.5, 0.5}, {0, 0.25}, {1, 1}, {-w, 0.5}, {0.5, 1 + w}, {1 + w, -w}}};
     const auto& [u, v] = uv[static_cast<std::size_t>(i % 6)];
     const auto ee = ccd_cases::ee_translation(rng, t, u, v);
     if (ee.hit) {
@@ -452,7 +453,8 @@ TEST(ExactCcdSampling, SampledContactsAgreeWithTheReferee) {
       std::array<Discrete::P, 4> p;
       for (std::size_t k = 0; k < 4; ++k)
         for (std::size_t c = 0; c < 3; ++c) p[k][c] = N * a[k][c] + s * (b[k][c] - a[k][c]);
-      return q.kind == kVF ? Discrete::vertex_face(p[0], p[1], p[2], p[3]) : Discrete::edge_edge(p[0], p[1], p[2], p[3]);
+      return q.kind == kVF ? Discrete::vertex_face(p[0], p[1], p[2], p[3])
+                           : Discrete::edge_edge(p[0], p[1], p[2], p[3]);
     };
     int first = -1;
     for (int s = 0; s <= N && first < 0; ++s)

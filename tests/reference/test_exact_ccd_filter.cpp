@@ -77,9 +77,10 @@ TEST(ExactCcdFilter, AgreesOnNearContacts) {
   for (int i = 0; i < 2000; ++i) {
     const double t = (1 + i % 7) / 8.0;
     const bool edge = i % 4 >= 2;
-    ccd_cases::Known k = i % 2 ? ccd_cases::vf_translation(rng, t, edge ? std::array<double, 3>{0, 0.5, 0.5}
-                                                                          : std::array<double, 3>{0.25, 0.25, 0.5})
-                               : ccd_cases::ee_translation(rng, t, edge ? 1.0 : 0.25, 0.5);
+    ccd_cases::Known k =
+        i % 2 ? ccd_cases::vf_translation(
+                    rng, t, edge ? std::array<double, 3>{0, 0.5, 0.5} : std::array<double, 3>{0.25, 0.25, 0.5})
+              : ccd_cases::ee_translation(rng, t, edge ? 1.0 : 0.25, 0.5);
     const double scale = std::ldexp(1.0, (i % 5 - 2) * 40);
     for (std::size_t j = 0; j < 4; ++j) {
       k.q.x0[j] *= scale;
@@ -100,10 +101,10 @@ TEST(ExactCcdFilter, ProvesSeparatedBoxesAndPlanesMisses) {
   EXPECT_EQ(certified_float_ccd(make(CcdKind::VertexFace, {Vec3(2, 0, 0), O, X, Y}, {Vec3(3, 1, 1), O, X, Y})).kind,
             Kind::Miss);
   // Overlapping boxes, but the vertex stays above the plane z = 0: the cubic p_z(t) > 0.
-  EXPECT_EQ(certified_float_ccd(make(CcdKind::VertexFace, {Vec3(0.25, 0.25, 1), O, X, Y},
-                                     {Vec3(0.5, 0.25, 0.125), O, X, Y}))
-                .kind,
-            Kind::Miss);
+  EXPECT_EQ(
+      certified_float_ccd(make(CcdKind::VertexFace, {Vec3(0.25, 0.25, 1), O, X, Y}, {Vec3(0.5, 0.25, 0.125), O, X, Y}))
+          .kind,
+      Kind::Miss);
 }
 
 // 1 - 2t^2 = 0 at t = 1/sqrt(2) (test_exact_ccd.cpp works the case): an irrational root with

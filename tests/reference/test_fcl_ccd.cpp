@@ -26,7 +26,8 @@ const Vec3 O(0, 0, 0), X(1, 0, 0), Y(0, 1, 0);
 // or the segments by at least 1/8, or outside by 1/4, unit scale, well-conditioned.
 TEST(FclCcd, AgreesWithExactOnClearQueries) {
   std::mt19937 rng(11);
-  const std::array<std::array<double, 3>, 4> bary{{{0.25, 0.25, 0.5}, {0.125, 0.5, 0.375}, {-0.25, 0.5, 0.75}, {0.5, 0.75, -0.25}}};
+  const std::array<std::array<double, 3>, 4> bary{
+      {{0.25, 0.25, 0.5}, {0.125, 0.5, 0.375}, {-0.25, 0.5, 0.75}, {0.5, 0.75, -0.25}}};
   const std::array<std::array<double, 2>, 4> uv{{{0.5, 0.5}, {0.125, 0.875}, {-0.25, 0.5}, {0.5, 1.25}}};
   int hits = 0;
   for (int i = 0; i < 400; ++i) {
@@ -56,7 +57,8 @@ TEST(FclCcd, AgreesWithExactOnSeparatedQueries) {
     const Vec3 a = ccd_cases::dyadic_vec(rng), b = ccd_cases::dyadic_vec(rng);
     const Vec3 lift(0, 0, 0.25 + std::fabs(a.z()) + std::fabs(b.z()));
     const CcdQuery vf = make(CcdKind::VertexFace, {a + lift + Vec3(0, 0, 1), O, X, Y}, {b + lift, O, X, Y});
-    const CcdQuery ee = make(CcdKind::EdgeEdge, {O, X, a + lift, b + lift}, {Y, X + Y, b + lift, a + lift + Vec3(0, 0, 1)});
+    const CcdQuery ee =
+        make(CcdKind::EdgeEdge, {O, X, a + lift, b + lift}, {Y, X + Y, b + lift, a + lift + Vec3(0, 0, 1)});
     const CcdQuery boxes = make(CcdKind::VertexFace, {a + Vec3(3, 0, 0), O, X, Y}, {b + Vec3(3, 0, 0), O, X, Y});
     for (const CcdQuery& q : {vf, ee, boxes}) {
       ASSERT_FALSE(exact_ccd(q).hit);
@@ -68,7 +70,8 @@ TEST(FclCcd, AgreesWithExactOnSeparatedQueries) {
 // Documented (fcl_adapter.h, from FCL's source): when the cubic's four coefficients are all below
 // 1e-7 FCL reports no contact, so coplanar-throughout motion and small scenes never collide.
 TEST(FclCcd, NearZeroCubicIsNeverAContact) {
-  const CcdQuery coplanar_vf = make(CcdKind::VertexFace, {Vec3(-0.5, 0.25, 0), O, X, Y}, {Vec3(0.5, 0.375, 0), O, X, Y});
+  const CcdQuery coplanar_vf =
+      make(CcdKind::VertexFace, {Vec3(-0.5, 0.25, 0), O, X, Y}, {Vec3(0.5, 0.375, 0), O, X, Y});
   const CcdQuery parallel_ee = make(CcdKind::EdgeEdge, {Vec3(-1, 0, 0), X, Vec3(0.5, 1, 0), Vec3(2, 1, 0)},
                                     {Vec3(-1, 0, 0), X, Vec3(0.5, -1, 0), Vec3(2, -1, 0)});
   for (const CcdQuery& q : {coplanar_vf, parallel_ee}) {
@@ -114,7 +117,8 @@ TEST(FclCcd, RecordsDegenerateCases) {
   EXPECT_TRUE(exact_ccd(through(Vec3(0.5, 0.5, 0))).hit);
   record("vf_on_edge", through(Vec3(0.5, 0.5, 0)));
   record("vf_on_corner", through(X));
-  const CcdQuery at_start = make(CcdKind::VertexFace, {Vec3(0.25, 0.25, 0), O, X, Y}, {Vec3(0.25, 0.25, 0) + v, O, X, Y});
+  const CcdQuery at_start =
+      make(CcdKind::VertexFace, {Vec3(0.25, 0.25, 0), O, X, Y}, {Vec3(0.25, 0.25, 0) + v, O, X, Y});
   const CcdQuery at_end = make(CcdKind::VertexFace, {Vec3(0.25, 0.25, 0) - v, O, X, Y}, {Vec3(0.25, 0.25, 0), O, X, Y});
   EXPECT_EQ(exact_ccd(at_start).toi, 0.0);
   EXPECT_EQ(exact_ccd(at_end).toi, 1.0);
