@@ -131,6 +131,14 @@ TEST(FclCcd, RecordsDegenerateCases) {
       make(CcdKind::VertexFace, {Vec3(0.25, 0, 1), O, X, Vec3(0.5, 1, 0)}, {Vec3(0.25, 0, -1), O, X, Vec3(0.5, -1, 0)});
   EXPECT_EQ(exact_ccd(collapse).toi, 0.5);
   record("vf_triangle_collapsing_to_segment", collapse);
+  // The same with the vertex at x = 5, far beyond the segment: exact miss; FCL hit at 0.49999997
+  // (its in-triangle test multiplies by the normal, zero there). Among 100000 random unit-scale
+  // queries FCL's one false positive was of this kind: a near-degenerate triangle (twice its area
+  // 2.6e-6) and a coplanar vertex at barycentric coordinates ~(6e4, 6e4, -1.2e5).
+  const CcdQuery collapse_far =
+      make(CcdKind::VertexFace, {Vec3(5, 0, 1), O, X, Vec3(0.5, 1, 0)}, {Vec3(5, 0, -1), O, X, Vec3(0.5, -1, 0)});
+  EXPECT_FALSE(exact_ccd(collapse_far).hit);
+  record("vf_triangle_collapsing_to_segment_vertex_far", collapse_far);
   // Edge-edge: B through A's end point (FCL hit 0.5); one ulp past it (FCL hit 0.5); 1e-6 past
   // it (FCL miss); collinear sliding, zero-length edge through B (FCL miss: coplanar throughout).
   auto crossing = [](double bx) {
