@@ -89,7 +89,7 @@ Poly primitive(Poly p) {
   return p;
 }
 
-/// A non-zero multiple of the remainder of a by b (b != 0): lc(b)^k a mod b.
+/// lc(b)^k times the remainder of a by b (b != 0): same zeros, integer arithmetic only.
 Poly pseudo_remainder(Poly a, const Poly& b) {
   const int db = degree(b);
   while (degree(a) >= db) {
