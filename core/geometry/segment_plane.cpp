@@ -39,9 +39,11 @@
 #include "core/geometry/segment_plane.h"
 
 #include "core/geometry/exact_dyadic.h"
+#include "core/geometry/plane_side.h"
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 
 namespace tecido {
 
@@ -60,45 +62,82 @@ inline int filtered_sign(double v, double err) {
   return err == 0.0 ? 0 : kUndecided;
 }
 
-inline bool tame(double v) {
-  const double a = std::fabs(v);
-  return a == 0.0 || (a >= 0x1p-150 && a <= 0x1p150);
+/// 1 unless v is 0 or of magnitude in [2^-150, 2^150] (NaN and infinities included), branch-free:
+/// the bit patterns of non-negative doubles are ordered like their values.
+inline unsigned untame(double v) {
+  constexpr std::uint64_t kLo = 0x3690000000000000ULL;  // 2^-150
+  constexpr std::uint64_t kHi = 0x4950000000000000ULL;  // 2^150
+  std::uint64_t b;
+  std::memcpy(&b, &v, sizeof b);
+  b &= 0x7fffffffffffffffULL;
+  return static_cast<unsigned>(b - kLo > kHi - kLo) & static_cast<unsigned>(b != 0);
 }
 
-bool tame(const Vec3& v) { return tame(v.x()) && tame(v.y()) && tame(v.z()); }
+inline unsigned untame(const Vec3& v) { return untame(v.x()) | untame(v.y()) | untame(v.z()); }
+
+/// Whether every input is tame (see the file comment), the filter's domain.
+inline bool tame_inputs(const BoundedPlane& pl, const Vec3& p1, const Vec3& p2) {
+  return (untame(pl.position) | untame(pl.normal) | untame(pl.forward) | untame(p1) | untame(p2) |
+          untame(pl.half_extents.x()) | untame(pl.half_extents.y())) == 0;
+}
 
 /// An end point in the plane's frame, in floating point, with the permanents of s, a and b.
+/// side_of fills d, s and ps (all the same-side rejection needs); forward_of and right_of the rest.
 struct Frame {
+  double d[3], ad[3];
   double s, a, b, ps, pa, pb;
 };
 
-Frame frame_of(const BoundedPlane& pl, const Vec3& r, const Vec3& rp, const Vec3& p) {
+Frame side_of(const BoundedPlane& pl, const Vec3& p) {
   const Vec3& n = pl.normal;
-  const Vec3& f = pl.forward;
-  const double d[3] = {p.x() - pl.position.x(), p.y() - pl.position.y(), p.z() - pl.position.z()};
-  const double ad[3] = {std::fabs(d[0]), std::fabs(d[1]), std::fabs(d[2])};
   Frame e;
-  e.s = (n.x() * d[0] + n.y() * d[1]) + n.z() * d[2];
-  e.a = (f.x() * d[0] + f.y() * d[1]) + f.z() * d[2];
-  e.b = (r.x() * d[0] + r.y() * d[1]) + r.z() * d[2];
-  e.ps = (std::fabs(n.x()) * ad[0] + std::fabs(n.y()) * ad[1]) + std::fabs(n.z()) * ad[2];
-  e.pa = (std::fabs(f.x()) * ad[0] + std::fabs(f.y()) * ad[1]) + std::fabs(f.z()) * ad[2];
-  e.pb = (rp.x() * ad[0] + rp.y() * ad[1]) + rp.z() * ad[2];
+  for (int k = 0; k < 3; ++k) {
+    e.d[k] = p[k] - pl.position[k];
+    e.ad[k] = std::fabs(e.d[k]);
+  }
+  e.s = (n.x() * e.d[0] + n.y() * e.d[1]) + n.z() * e.d[2];
+  e.ps = (std::fabs(n.x()) * e.ad[0] + std::fabs(n.y()) * e.ad[1]) + std::fabs(n.z()) * e.ad[2];
   return e;
 }
 
-/// Whether the crossing point (s1 != s2, sigma = sign(s1 - s2)) lies in the closed rectangle:
-/// 1, 0 or kUndecided. X = hx |s1 - s2| - |s1 a2 - s2 a1| >= 0 and Y (with b, hy) >= 0.
-int crossing_inside(const Frame& e1, const Frame& e2, int sigma, double hx, double hy) {
+/// The exact sign of s from its floating-point value, or kUndecided. The bound of plane_side_sign
+/// (plane_side.h), valid for every input, tame or not: s is computed the same way.
+int side_sign(const BoundedPlane& pl, const Frame& e) {
+  const double err = detail::kSideErrBound * e.ps + detail::kSideUnderflowPad;
+  if (e.s > err) return 1;
+  if (e.s < -err) return -1;
+  const Vec3& n = pl.normal;
+  if ((n.x() == 0.0 || e.d[0] == 0.0) && (n.y() == 0.0 || e.d[1] == 0.0) && (n.z() == 0.0 || e.d[2] == 0.0)) return 0;
+  return kUndecided;
+}
+
+/// a = f.d with its permanent.
+void forward_of(const Vec3& f, Frame& e) {
+  e.a = (f.x() * e.d[0] + f.y() * e.d[1]) + f.z() * e.d[2];
+  e.pa = (std::fabs(f.x()) * e.ad[0] + std::fabs(f.y()) * e.ad[1]) + std::fabs(f.z()) * e.ad[2];
+}
+
+/// b = r.d with its permanent, for both end points; r = n x f rounded, rp its permanent.
+void right_of(const BoundedPlane& pl, Frame& e1, Frame& e2) {
+  const Vec3& n = pl.normal;
+  const Vec3& f = pl.forward;
+  const Vec3 r(n.y() * f.z() - n.z() * f.y(), n.z() * f.x() - n.x() * f.z(), n.x() * f.y() - n.y() * f.x());
+  const Vec3 rp(std::fabs(n.y() * f.z()) + std::fabs(n.z() * f.y()), std::fabs(n.z() * f.x()) + std::fabs(n.x() * f.z()),
+                std::fabs(n.x() * f.y()) + std::fabs(n.y() * f.x()));
+  for (Frame* e : {&e1, &e2}) {
+    e->b = (r.x() * e->d[0] + r.y() * e->d[1]) + r.z() * e->d[2];
+    e->pb = (rp.x() * e->ad[0] + rp.y() * e->ad[1]) + rp.z() * e->ad[2];
+  }
+}
+
+/// Whether the crossing point's coordinate v (a with h = hx, or b with h = hy) lies in [-h, h]:
+/// the sign of h |s1 - s2| - |s1 v2 - s2 v1|, with sigma = sign(s1 - s2) known exactly;
+/// +1, -1, 0 or kUndecided. pv1, pv2 are the permanents of v1, v2.
+int crossing_within(const Frame& e1, const Frame& e2, double v1, double pv1, double v2, double pv2, int sigma,
+                    double h) {
   const double dabs = sigma * (e1.s - e2.s);
-  const double pd = e1.ps + e2.ps;
-  const double x = hx * dabs - std::fabs(e1.s * e2.a - e2.s * e1.a);
-  const int sx = filtered_sign(x, kErr * (hx * pd + (e1.ps * e2.pa + e2.ps * e1.pa)));
-  if (sx < 0) return 0;
-  const double y = hy * dabs - std::fabs(e1.s * e2.b - e2.s * e1.b);
-  const int sy = filtered_sign(y, kErr * (hy * pd + (e1.ps * e2.pb + e2.ps * e1.pb)));
-  if (sy < 0) return 0;
-  return (sx != kUndecided && sy != kUndecided) ? 1 : kUndecided;
+  const double x = h * dabs - std::fabs(e1.s * v2 - e2.s * v1);
+  return filtered_sign(x, kErr * (h * (e1.ps + e2.ps) + (e1.ps * pv2 + e2.ps * pv1)));
 }
 
 /// Whether the interval of v1, v2 (permanents p1, p2) lies strictly beyond h on one side:
@@ -234,28 +273,29 @@ SegmentPlaneHit segment_plane_exact(const BoundedPlane& pl, const Vec3& p1, cons
 
 SegmentPlaneHit segment_plane(const BoundedPlane& pl, const Vec3& p1, const Vec3& p2) {
   const double hx = pl.half_extents.x(), hy = pl.half_extents.y();
-  if (!(tame(pl.position) && tame(pl.normal) && tame(pl.forward) && tame(p1) && tame(p2) && tame(hx) && tame(hy)))
-    return detail::segment_plane_exact(pl, p1, p2);
+  Frame e1 = side_of(pl, p1), e2 = side_of(pl, p2);
+  const int sg1 = side_sign(pl, e1), sg2 = side_sign(pl, e2);
+  if (sg1 * sg2 == 1) return {};  // both strictly on one side: no crossing (the common case)
+  if (sg1 == kUndecided || sg2 == kUndecided || !tame_inputs(pl, p1, p2)) return detail::segment_plane_exact(pl, p1, p2);
   if (hx < 0.0 || hy < 0.0) return {};
-  const Vec3& n = pl.normal;
-  const Vec3& f = pl.forward;
-  const Vec3 r(n.y() * f.z() - n.z() * f.y(), n.z() * f.x() - n.x() * f.z(), n.x() * f.y() - n.y() * f.x());
-  const Vec3 rp(std::fabs(n.y() * f.z()) + std::fabs(n.z() * f.y()), std::fabs(n.z() * f.x()) + std::fabs(n.x() * f.z()),
-                std::fabs(n.x() * f.y()) + std::fabs(n.y() * f.x()));
-  const Frame e1 = frame_of(pl, r, rp, p1), e2 = frame_of(pl, r, rp, p2);
-  const int sg1 = filtered_sign(e1.s, kErr * e1.ps), sg2 = filtered_sign(e2.s, kErr * e2.ps);
-  if (sg1 == kUndecided || sg2 == kUndecided) return detail::segment_plane_exact(pl, p1, p2);
-  if (sg1 * sg2 > 0) return {};  // both strictly on one side: no crossing
-  if (sg1 == 0 && sg2 == 0) {    // the segment lies in the plane
+  forward_of(pl.forward, e1);
+  forward_of(pl.forward, e2);
+  if (sg1 == 0 && sg2 == 0) {  // the segment lies in the plane
+    right_of(pl, e1, e2);
     const int in = in_plane_inside(e1, e2, hx, hy);
     if (in == kUndecided) return detail::segment_plane_exact(pl, p1, p2);
     if (in == 0) return {};
     return {true, entry_fraction(e1.a, e2.a, e1.b, e2.b, hx, hy)};
   }
-  // Different sides, or exactly one end point on the plane: one crossing point.
-  const int in = crossing_inside(e1, e2, sg1 != 0 ? sg1 : -sg2, hx, hy);
-  if (in == kUndecided) return detail::segment_plane_exact(pl, p1, p2);
-  if (in == 0) return {};
+  // Different sides, or exactly one end point on the plane: one crossing point; b only when a
+  // is not already outside.
+  const int sigma = sg1 != 0 ? sg1 : -sg2;
+  const int sx = crossing_within(e1, e2, e1.a, e1.pa, e2.a, e2.pa, sigma, hx);
+  if (sx == -1) return {};
+  right_of(pl, e1, e2);
+  const int sy = crossing_within(e1, e2, e1.b, e1.pb, e2.b, e2.pb, sigma, hy);
+  if (sy == -1) return {};
+  if (sx == kUndecided || sy == kUndecided) return detail::segment_plane_exact(pl, p1, p2);
   return {true, sg1 == 0 ? 0.0 : (sg2 == 0 ? 1.0 : crossing_fraction(e1.s, e2.s))};
 }
 
