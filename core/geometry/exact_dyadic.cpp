@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <stdexcept>
 
@@ -24,11 +25,13 @@ void check_width(int width) {
 Dyadic::Dyadic(double x) {
   if (!std::isfinite(x)) throw std::domain_error("Dyadic: NaN or infinite double");
   if (x == 0.0) return;
-  // |x| = m 2^e with m < 2^53 an integer (subnormals included: frexp normalises them).
-  int k = 0;
-  const double f = std::frexp(std::fabs(x), &k);
-  const std::uint64_t m = static_cast<std::uint64_t>(std::ldexp(f, 53));
-  const int e = k - 53;  // in [-1126, 971]
+  // |x| = m 2^e with m < 2^53 an integer, read from the bit pattern (IEEE-754 binary64).
+  std::uint64_t bits;
+  std::memcpy(&bits, &x, sizeof bits);
+  const int biased = static_cast<int>((bits >> 52) & 0x7ff);
+  const std::uint64_t frac = bits & ((1ULL << 52) - 1);
+  const std::uint64_t m = biased == 0 ? frac : (frac | (1ULL << 52));  // subnormal: no hidden bit
+  const int e = (biased == 0 ? 1 : biased) - 1075;                      // in [-1074, 971]
   const int q = floor_div64(e), r = e - 64 * q;
   w_[0] = m << r;
   w_[1] = r == 0 ? 0 : m >> (64 - r);
@@ -91,6 +94,17 @@ double Dyadic::approx_mantissa(long* exp2) const {
   return neg_ ? -m : m;
 }
 
+int Dyadic::compare_magnitudes(const Dyadic& x, const Dyadic& y) {
+  const int tx = x.base_ + x.n_, ty = y.base_ + y.n_;  // one past the highest (nonzero) limb
+  if (tx != ty) return tx > ty ? 1 : -1;
+  for (int i = tx - 1; i >= std::min(x.base_, y.base_); --i) {
+    const int jx = i - x.base_, jy = i - y.base_;
+    const std::uint64_t a = jx >= 0 ? x.w_[jx] : 0, b = jy >= 0 ? y.w_[jy] : 0;
+    if (a != b) return a > b ? 1 : -1;
+  }
+  return 0;
+}
+
 Dyadic Dyadic::add_signed(const Dyadic& x, const Dyadic& y, bool negate_y) {
   const bool yneg = (y.neg_ != negate_y);
   if (y.n_ == 0) return x;
@@ -99,46 +113,37 @@ Dyadic Dyadic::add_signed(const Dyadic& x, const Dyadic& y, bool negate_y) {
     r.neg_ = yneg;
     return r;
   }
+  const bool same_sign = x.neg_ == yneg;
+  const int cmp = compare_magnitudes(x, y);
+  if (!same_sign && cmp == 0) return Dyadic();
+  // |result| = |big| + |small| or |big| - |small|: big's limbs laid out at their place, then
+  // small's added or subtracted in place, the carry or borrow running upwards (Knuth's
+  // algorithms A and S).
+  const Dyadic& big = cmp >= 0 ? x : y;
+  const Dyadic& small = cmp >= 0 ? y : x;
   const int lo = std::min(x.base_, y.base_);
-  const int top = std::max(x.base_ + x.n_, y.base_ + y.n_);  // one past the highest limb
-  const int width = top - lo + 1;                            // + 1 for a carry
+  const int width = std::max(x.base_ + x.n_, y.base_ + y.n_) - lo + 1;  // + 1 for a carry
   check_width(width);
-  // The limb of v at absolute index lo + i (0 outside v's stored limbs).
-  auto limb = [lo](const Dyadic& v, int i) -> std::uint64_t {
-    const int j = lo + i - v.base_;
-    return (j >= 0 && j < v.n_) ? v.w_[j] : 0;
-  };
   Dyadic r;
   r.base_ = lo;
   r.n_ = width;
-  if (x.neg_ == yneg) {  // same signs: add the magnitudes (Knuth's algorithm A)
-    std::uint64_t carry = 0;
-    for (int i = 0; i + 1 < width; ++i) {
-      const u128 s = static_cast<u128>(limb(x, i)) + limb(y, i) + carry;
-      r.w_[i] = static_cast<std::uint64_t>(s);
-      carry = static_cast<std::uint64_t>(s >> 64);
+  std::fill(r.w_, r.w_ + width, 0);
+  std::copy(big.w_, big.w_ + big.n_, r.w_ + (big.base_ - lo));
+  std::uint64_t* w = r.w_ + (small.base_ - lo);
+  const int room = width - (small.base_ - lo);
+  std::uint64_t c = 0;  // carry or borrow
+  for (int i = 0; i < room && (i < small.n_ || c != 0); ++i) {
+    const u128 v = static_cast<u128>(i < small.n_ ? small.w_[i] : 0) + c;
+    if (same_sign) {
+      const u128 t = w[i] + v;
+      w[i] = static_cast<std::uint64_t>(t);
+      c = static_cast<std::uint64_t>(t >> 64);
+    } else {
+      c = static_cast<u128>(w[i]) < v ? 1 : 0;
+      w[i] = static_cast<std::uint64_t>(w[i] - v);
     }
-    r.w_[width - 1] = carry;
-    r.neg_ = x.neg_;
-  } else {  // opposite signs: subtract the smaller magnitude from the larger (algorithm S)
-    int cmp = 0;
-    for (int i = width - 2; i >= 0 && cmp == 0; --i) {
-      const std::uint64_t a = limb(x, i), b = limb(y, i);
-      cmp = (a > b) - (a < b);
-    }
-    if (cmp == 0) return Dyadic();
-    const Dyadic& big = cmp > 0 ? x : y;
-    const Dyadic& small = cmp > 0 ? y : x;
-    std::uint64_t borrow = 0;
-    for (int i = 0; i + 1 < width; ++i) {
-      const std::uint64_t a = limb(big, i), b = limb(small, i);
-      const u128 sub = static_cast<u128>(b) + borrow;
-      r.w_[i] = a - static_cast<std::uint64_t>(sub);
-      borrow = static_cast<u128>(a) < sub ? 1 : 0;
-    }
-    r.w_[width - 1] = 0;
-    r.neg_ = cmp > 0 ? x.neg_ : yneg;
   }
+  r.neg_ = same_sign ? x.neg_ : (cmp > 0 ? x.neg_ : yneg);
   r.normalise();
   return r;
 }

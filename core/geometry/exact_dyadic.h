@@ -54,6 +54,8 @@ class Dyadic {
 
  private:
   static Dyadic add_signed(const Dyadic& x, const Dyadic& y, bool negate_y);
+  /// Sign of |x| - |y|.
+  static int compare_magnitudes(const Dyadic& x, const Dyadic& y);
   void normalise();
 
   std::uint64_t w_[kMaxLimbs];  ///< w_[0 .. n_) are meaningful; w_[0] and w_[n_ - 1] nonzero

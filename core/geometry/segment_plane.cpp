@@ -17,6 +17,8 @@
 //   X = hx sigma (s1 - s2) - |s1 a2 - s2 a1|: 11;  Y (the same with b, hy): 13;
 //   in the plane: a_i -/+ hx: 5, b_i -/+ hy: 7, a2 - a1: 5, b2 - b1: 7, a1 b2 - a2 b1: 12,
 //   Z = hx |b2 - b1| + hy |a2 - a1| - |a1 b2 - a2 b1|: 13.
+// (The signs of s1 and s2 come first, from plane_side_sign's own bound, plane_side.h, which
+// also covers underflow, so that a segment on one side is rejected before anything else.)
 // So k <= 13 and gamma_13 (1 + u)^16 < 14u: kErr = 16u = 2^-49 times the computed permanent
 // bounds every error, and, being a power of two, scaling by it is exact (see below), so the
 // bound itself is not rounded down. Absolute values are not polynomials; where V holds |A|, the
@@ -206,20 +208,28 @@ double to_double(const Dyadic& x) {
   return std::ldexp(m, static_cast<int>(std::clamp(e, -4000L, 4000L)));
 }
 
+/// An end point in the plane's frame, exactly: d = p - P, and s, a, b once computed.
 struct ExactFrame {
-  Dyadic s, a, b;
+  Dyadic d[3], s, a, b;
 };
 
-ExactFrame exact_frame(const Dyadic (&pos)[3], const Dyadic (&n)[3], const Dyadic (&f)[3], const Dyadic (&r)[3],
-                       const Vec3& p) {
-  ExactFrame e;
-  for (int k = 0; k < 3; ++k) {
-    const Dyadic d = Dyadic(p[k]) - pos[k];
-    e.s = e.s + n[k] * d;
-    e.a = e.a + f[k] * d;
-    e.b = e.b + r[k] * d;
-  }
-  return e;
+Dyadic dot(const Dyadic (&v)[3], const Dyadic (&d)[3]) { return v[0] * d[0] + v[1] * d[1] + v[2] * d[2]; }
+
+Dyadic dot(const Vec3& v, const Dyadic (&d)[3]) { return dot({Dyadic(v.x()), Dyadic(v.y()), Dyadic(v.z())}, d); }
+
+/// e.d and e.s for the end point p.
+void exact_side(const BoundedPlane& pl, const Vec3& p, ExactFrame& e) {
+  for (int k = 0; k < 3; ++k) e.d[k] = Dyadic(p[k]) - Dyadic(pl.position[k]);
+  e.s = dot(pl.normal, e.d);
+}
+
+/// e1.b and e2.b, with r = n x f exactly.
+void exact_right(const BoundedPlane& pl, ExactFrame& e1, ExactFrame& e2) {
+  const Dyadic n[3] = {Dyadic(pl.normal.x()), Dyadic(pl.normal.y()), Dyadic(pl.normal.z())};
+  const Dyadic f[3] = {Dyadic(pl.forward.x()), Dyadic(pl.forward.y()), Dyadic(pl.forward.z())};
+  const Dyadic r[3] = {n[1] * f[2] - n[2] * f[1], n[2] * f[0] - n[0] * f[2], n[0] * f[1] - n[1] * f[0]};
+  e1.b = dot(r, e1.d);
+  e2.b = dot(r, e2.d);
 }
 
 /// in_plane_inside, exactly.
@@ -246,18 +256,16 @@ namespace detail {
 SegmentPlaneHit segment_plane_exact(const BoundedPlane& pl, const Vec3& p1, const Vec3& p2) {
   ++g_exact_path_calls;
   if (!finite_inputs(pl, p1, p2) || !(pl.half_extents.x() >= 0.0 && pl.half_extents.y() >= 0.0)) return {};
-  Dyadic pos[3], n[3], f[3], r[3];
-  for (int k = 0; k < 3; ++k) {
-    pos[k] = Dyadic(pl.position[k]);
-    n[k] = Dyadic(pl.normal[k]);
-    f[k] = Dyadic(pl.forward[k]);
-  }
-  for (int k = 0; k < 3; ++k) r[k] = n[(k + 1) % 3] * f[(k + 2) % 3] - n[(k + 2) % 3] * f[(k + 1) % 3];
-  const ExactFrame e1 = exact_frame(pos, n, f, r, p1), e2 = exact_frame(pos, n, f, r, p2);
+  ExactFrame e1, e2;
+  exact_side(pl, p1, e1);
+  exact_side(pl, p2, e2);
   const int sg1 = e1.s.sign(), sg2 = e2.s.sign();
   if (sg1 * sg2 > 0) return {};
+  e1.a = dot(pl.forward, e1.d);
+  e2.a = dot(pl.forward, e2.d);
   const Dyadic hx(pl.half_extents.x()), hy(pl.half_extents.y());
   if (sg1 == 0 && sg2 == 0) {
+    exact_right(pl, e1, e2);
     if (!in_plane_inside_exact(e1, e2, hx, hy)) return {};
     return {true, entry_fraction(to_double(e1.a), to_double(e2.a), to_double(e1.b), to_double(e2.b),
                                  pl.half_extents.x(), pl.half_extents.y())};
@@ -265,6 +273,7 @@ SegmentPlaneHit segment_plane_exact(const BoundedPlane& pl, const Vec3& p1, cons
   const int sigma = sg1 != 0 ? sg1 : -sg2;
   const Dyadic dabs = (e1.s - e2.s).times_sign(sigma);
   if ((hx * dabs - (e1.s * e2.a - e2.s * e1.a).abs()).sign() < 0) return {};
+  exact_right(pl, e1, e2);
   if ((hy * dabs - (e1.s * e2.b - e2.s * e1.b).abs()).sign() < 0) return {};
   return {true, sg1 == 0 ? 0.0 : (sg2 == 0 ? 1.0 : crossing_fraction(e1.s, e2.s))};
 }
