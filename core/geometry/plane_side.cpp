@@ -2,6 +2,10 @@
 
 #include "core/geometry/exact_dyadic.h"
 
+#if defined(__FAST_MATH__)
+#error "plane_side_sign's filter relies on IEEE-754 rounding: do not build it with -ffast-math"
+#endif
+
 namespace tecido::detail {
 
 int plane_side_sign_exact(const BoundedPlane& plane, const Vec3& p) {

@@ -47,6 +47,10 @@
 #include <cmath>
 #include <cstring>
 
+#if defined(__FAST_MATH__)
+#error "segment_plane.cpp's filter relies on IEEE-754 rounding: do not build it with -ffast-math"
+#endif
+
 namespace tecido {
 
 namespace {
