@@ -11,14 +11,16 @@ namespace tecido {
 
 /// +1 when p lies strictly on the normal's side of the plane, -1 strictly on the other side,
 /// 0 exactly on it; exact for every finite input. Method: a floating-point filter with a
-/// rigorous error bound (below), then exact dyadic arithmetic (core/geometry/exact_dyadic.h)
-/// when the filter cannot decide. NaN or infinite inputs: unspecified result, never throws.
+/// rigorous error bound (below); when it cannot decide, Shewchuk's expansion arithmetic
+/// (core/geometry/expansion_arithmetic.h) for inputs within [2^-450, 2^450] in magnitude, exact
+/// dyadic arithmetic (core/geometry/exact_dyadic.h) beyond. NaN or infinite inputs: unspecified
+/// result, never throws.
 inline int plane_side_sign(const BoundedPlane& plane, const Vec3& p);
 
 namespace detail {
 
-/// The exact stage alone (no filter): Dyadic arithmetic. Non-finite input: the sign of the
-/// floating-point value (0 for NaN).
+/// The exact stages alone (no filter): expansions, or Dyadic arithmetic for extreme inputs.
+/// Non-finite input: the sign of the floating-point value (0 for NaN).
 int plane_side_sign_exact(const BoundedPlane& plane, const Vec3& p);
 
 /// Error bound of the filter, relative to the permanent sum |n_k| |d_k|. With u = 2^-53 and
