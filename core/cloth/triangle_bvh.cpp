@@ -223,6 +223,27 @@ void TriangleBvh::refit(const std::vector<Vec3>& x) {
     }
     vlo_[v][3] = vhi_[v][3] = 0.0f;
   }
+  refit_from_vertex_bounds();
+}
+
+void TriangleBvh::refit(const std::vector<Vec3>& x0, const std::vector<Vec3>& x1) {
+  if (nodes_.empty()) return;
+  const std::size_t nv = x0.size();
+  vlo_.resize(nv);
+  vhi_.resize(nv);
+  for (std::size_t v = 0; v < nv; ++v) {
+    for (int d = 0; d < 3; ++d) {
+      // float_down / float_up are monotone: the bounds of the min / max are the min / max of
+      // the bounds, so this contains both frames' outward boxes.
+      vlo_[v][d] = float_down(std::min(x0[v][d], x1[v][d]));
+      vhi_[v][d] = float_up(std::max(x0[v][d], x1[v][d]));
+    }
+    vlo_[v][3] = vhi_[v][3] = 0.0f;
+  }
+  refit_from_vertex_bounds();
+}
+
+void TriangleBvh::refit_from_vertex_bounds() {
   // Children always have larger indices than their parent: one reverse sweep suffices.
   for (std::size_t k = nodes_.size(); k-- > 0;) {
     Node& nd = nodes_[k];
@@ -300,6 +321,7 @@ unsigned TriangleBvh::lanes_sharing(const LeafVerts& b, int v0, int v1, int v2) 
 #endif
 }
 
+template <bool kSkipSharing>
 inline void TriangleBvh::leaf_pairs(int a, int b, bool wide, std::vector<std::array<int, 2>>& out) const {
   const Node& na = nodes_[a];
   const Node& nb = nodes_[b];
@@ -310,14 +332,16 @@ inline void TriangleBvh::leaf_pairs(int a, int b, bool wide, std::vector<std::ar
   unsigned mask = 0;
 #if TECIDO_BVH_AVX512
   if (wide) {
-    mask = leaf_mask16_avx512(na.lo[0], na.hi[0], nb.lo[0], nb.hi[0], la.v[0], lb.v[0]);
+    mask = kSkipSharing ? leaf_mask16_avx512(na.lo[0], na.hi[0], nb.lo[0], nb.hi[0], la.v[0], lb.v[0])
+                        : box_mask16_avx512(na.lo[0], na.hi[0], nb.lo[0], nb.hi[0]);
   } else
 #endif
   {
     for (int k = 0; k < kWidth; ++k) {
       const float lo[3] = {na.lo[0][k], na.lo[1][k], na.lo[2][k]};
       const float hi[3] = {na.hi[0][k], na.hi[1][k], na.hi[2][k]};
-      const unsigned m = lanes_overlapping(nb, lo, hi) & ~lanes_sharing(lb, la.v[0][k], la.v[1][k], la.v[2][k]);
+      unsigned m = lanes_overlapping(nb, lo, hi);
+      if (kSkipSharing) m &= ~lanes_sharing(lb, la.v[0][k], la.v[1][k], la.v[2][k]);
       mask |= m << (kWidth * k);
     }
   }
@@ -333,11 +357,16 @@ inline void TriangleBvh::leaf_pairs(int a, int b, bool wide, std::vector<std::ar
   }
 }
 
-void TriangleBvh::overlapping_pairs(std::vector<std::array<int, 2>>& out) {
+void TriangleBvh::overlapping_pairs(std::vector<std::array<int, 2>>& out) { pairs<true>(out); }
+
+void TriangleBvh::overlapping_pairs_with_neighbours(std::vector<std::array<int, 2>>& out) { pairs<false>(out); }
+
+template <bool kSkipSharing>
+void TriangleBvh::pairs(std::vector<std::array<int, 2>>& out) {
   if (nodes_.empty()) return;
   const bool wide = use_wide_ && wide_kernel_available();
   if (nodes_[0].leaf) {
-    leaf_pairs(0, 0, wide, out);
+    leaf_pairs<kSkipSharing>(0, 0, wide, out);
     return;
   }
   // Node pairs still to visit are pairs of internal nodes, or a leaf with an internal node: a
@@ -389,7 +418,7 @@ void TriangleBvh::overlapping_pairs(std::vector<std::array<int, 2>>& out) {
         for (int k = 0; k < na.count; ++k) {
           const int c = na.child[k];
           if ((na.leaf_kids >> k) & 1u) {
-            leaf_pairs(c, c, wide, out);
+            leaf_pairs<kSkipSharing>(c, c, wide, out);
           } else {
             stack[top++] = pack(c, c);
           }
@@ -399,7 +428,7 @@ void TriangleBvh::overlapping_pairs(std::vector<std::array<int, 2>>& out) {
         const int bit = lowest_bit(mask);
         const int k = bit / kWidth, l = bit % kWidth;
         if ((na.leaf_kids >> k) & (nb.leaf_kids >> l) & 1u) {
-          leaf_pairs(na.child[k], nb.child[l], wide, out);
+          leaf_pairs<kSkipSharing>(na.child[k], nb.child[l], wide, out);
         } else {
           stack[top++] = pack(na.child[k], nb.child[l]);
         }
@@ -410,7 +439,7 @@ void TriangleBvh::overlapping_pairs(std::vector<std::array<int, 2>>& out) {
       for (unsigned m = lanes_overlapping(nb, node_box_[a].lo, node_box_[a].hi); m; m &= m - 1) {
         const int l = lowest_bit(m);
         if ((nb.leaf_kids >> l) & 1u) {
-          leaf_pairs(a, nb.child[l], wide, out);
+          leaf_pairs<kSkipSharing>(a, nb.child[l], wide, out);
         } else {
           stack[top++] = pack(a, nb.child[l]);
         }
@@ -420,7 +449,7 @@ void TriangleBvh::overlapping_pairs(std::vector<std::array<int, 2>>& out) {
       for (unsigned m = lanes_overlapping(na, node_box_[b].lo, node_box_[b].hi); m; m &= m - 1) {
         const int k = lowest_bit(m);
         if ((na.leaf_kids >> k) & 1u) {
-          leaf_pairs(na.child[k], b, wide, out);
+          leaf_pairs<kSkipSharing>(na.child[k], b, wide, out);
         } else {
           stack[top++] = pack(na.child[k], b);
         }
