@@ -2,6 +2,8 @@
 
 #include "core/cloth/mesh_topology.h"
 #include "core/geometry/ccd.h"
+#include "core/geometry/ccd_kinetic_boxes.h"
+#include "core/geometry/ccd_pipeline.h"
 
 #include <algorithm>
 
@@ -30,14 +32,41 @@ std::vector<MeshEdge> mesh_edges(const std::vector<std::array<int, 3>>& triangle
   return build_mesh_topology(nv, triangles).edges;
 }
 
-/// True when the closed boxes [lo, hi] (lo xyz, hi xyz) overlap.
-bool boxes_overlap(const std::array<double, 6>& a, const std::array<double, 6>& b) {
-  return a[0] <= b[3] && b[0] <= a[3] && a[1] <= b[4] && b[1] <= a[4] && a[2] <= b[5] && b[2] <= a[5];
+/// Extends box b (lo xyz, hi xyz) by point p.
+void extend(double b[6], const Vec3& p) {
+  for (int c = 0; c < 3; ++c) {
+    b[c] = std::min(b[c], p[c]);
+    b[c + 3] = std::max(b[c + 3], p[c]);
+  }
 }
 
-std::array<double, 6> united(const std::array<double, 6>& a, const std::array<double, 6>& b) {
-  return {std::min(a[0], b[0]), std::min(a[1], b[1]), std::min(a[2], b[2]),
-          std::max(a[3], b[3]), std::max(a[4], b[4]), std::max(a[5], b[5])};
+void point_box(double b[6], const Vec3& p) {
+  for (int c = 0; c < 3; ++c) b[c] = b[c + 3] = p[c];
+}
+
+/// The first stages of core's test (ccd_pipeline.cpp) on two primitives' boxes at both frames:
+/// their swept boxes (the union of the two) overlap and their kinetic boxes are not certainly
+/// disjoint. The boxes are those the pipeline computes from the query's points, so a pair
+/// rejected here is one the test would reject.
+template <class B>
+bool may_touch(const B& a, const B& b) {
+  for (int c = 0; c < 3; ++c) {
+    const double alo = std::min(a.b0[c], a.b1[c]), ahi = std::max(a.b0[c + 3], a.b1[c + 3]);
+    const double blo = std::min(b.b0[c], b.b1[c]), bhi = std::max(b.b0[c + 3], b.b1[c + 3]);
+    if (ahi < blo || bhi < alo) return false;
+  }
+  return !ccd_kinetic_boxes_disjoint(a.b0, a.b1, b.b0, b.b1);
+}
+
+/// Swept boxes overlap (the cheap half of may_touch).
+template <class B>
+bool swept_overlap(const B& a, const B& b) {
+  for (int c = 0; c < 3; ++c) {
+    const double alo = std::min(a.b0[c], a.b1[c]), ahi = std::max(a.b0[c + 3], a.b1[c + 3]);
+    const double blo = std::min(b.b0[c], b.b1[c]), bhi = std::max(b.b0[c + 3], b.b1[c + 3]);
+    if (ahi < blo || bhi < alo) return false;
+  }
+  return true;
 }
 
 }  // namespace
@@ -107,38 +136,42 @@ ContinuousSelfCollisionDetector::ContinuousSelfCollisionDetector(const std::vect
   bvh_.build(x_build, tris_);
 }
 
+bool ContinuousSelfCollisionDetector::run(const CcdQuery& q) const {
+  // Core's test: its box stages were just run here on the same boxes (may_touch), so go on
+  // from the next stage (the same answer, without checking the boxes twice).
+  return test_ == &default_test ? ccd_after_boxes(q).hit : test_(q).hit;
+}
+
 void ContinuousSelfCollisionDetector::test_pair(int i, int j, const std::vector<Vec3>& x0, const std::vector<Vec3>& x1) {
+  // Every feature's boxes lie in its triangle's, so triangles whose kinetic boxes never meet
+  // have no feature pair that may touch.
+  if (ccd_kinetic_boxes_disjoint(tbox_[i].b0, tbox_[i].b1, tbox_[j].b0, tbox_[j].b1)) return;
+  ++kinetic_pairs_;
   const Owned& oi = owned_[i];
   const Owned& oj = owned_[j];
-  const std::array<int, 3>& ti = tris_[i];
-  const std::array<int, 3>& tj = tris_[j];
-  const std::array<double, 6> bi = united(united(vbox_[ti[0]], vbox_[ti[1]]), vbox_[ti[2]]);
-  const std::array<double, 6> bj = united(united(vbox_[tj[0]], vbox_[tj[1]]), vbox_[tj[2]]);
   // Vertices of one triangle against the other face.
   for (int side = 0; side < 2; ++side) {
     const Owned& o = side == 0 ? oi : oj;
-    const std::array<int, 3>& face = side == 0 ? tj : ti;
-    const std::array<double, 6>& fbox = side == 0 ? bj : bi;
     const int f = side == 0 ? j : i;
+    const std::array<int, 3>& face = tris_[f];
     for (int k = 0; k < o.vertices; ++k) {
       const int v = o.vertex[k];
-      if (has_vertex(face, v) || !boxes_overlap(vbox_[v], fbox)) continue;
+      if (has_vertex(face, v) || !may_touch(vbox_[v], tbox_[f])) continue;
       ++tests_;
-      if (test_(vertex_face_query(x0, x1, v, face)).hit) out_.vertex_face.push_back({v, f});
+      if (run(vertex_face_query(x0, x1, v, face))) out_.vertex_face.push_back({v, f});
     }
   }
   // Edges of one against edges of the other.
   for (int a = 0; a < oi.edge_count; ++a) {
-    const MeshEdge& e = edges_[oi.edge[a]];
-    const std::array<double, 6> be = united(vbox_[e[0]], vbox_[e[1]]);
-    if (!boxes_overlap(be, bj)) continue;
+    const int ea = oi.edge[a];
+    if (!swept_overlap(ebox_[ea], tbox_[j])) continue;
     for (int b = 0; b < oj.edge_count; ++b) {
-      const MeshEdge& g = edges_[oj.edge[b]];
-      if (share_vertex(e, g) || !boxes_overlap(be, united(vbox_[g[0]], vbox_[g[1]]))) continue;
+      const int eb = oj.edge[b];
+      if (share_vertex(edges_[ea], edges_[eb]) || !may_touch(ebox_[ea], ebox_[eb])) continue;
       ++tests_;
       // The query in the pair's own order (as the brute force builds it): same answer.
-      const EdgeEdgePair pair = ordered(e, g);
-      if (test_(edge_edge_query(x0, x1, pair[0], pair[1])).hit) out_.edge_edge.push_back(pair);
+      const EdgeEdgePair pair = ordered(edges_[ea], edges_[eb]);
+      if (run(edge_edge_query(x0, x1, pair[0], pair[1]))) out_.edge_edge.push_back(pair);
     }
   }
 }
@@ -147,13 +180,35 @@ const ContinuousContacts& ContinuousSelfCollisionDetector::detect(const std::vec
   out_.vertex_face.clear();
   out_.edge_edge.clear();
   tri_pairs_.clear();
-  tests_ = 0;
+  tests_ = kinetic_pairs_ = 0;
   vbox_.resize(x0.size());
   for (std::size_t v = 0; v < x0.size(); ++v) {
-    const Vec3 lo = x0[v].cwiseMin(x1[v]), hi = x0[v].cwiseMax(x1[v]);
-    vbox_[v] = {lo.x(), lo.y(), lo.z(), hi.x(), hi.y(), hi.z()};
+    point_box(vbox_[v].b0, x0[v]);
+    point_box(vbox_[v].b1, x1[v]);
   }
-  bvh_.refit(x0, x1);
+  ebox_.resize(edges_.size());
+  for (std::size_t e = 0; e < edges_.size(); ++e) {
+    ebox_[e] = vbox_[edges_[e][0]];
+    extend(ebox_[e].b0, x0[edges_[e][1]]);
+    extend(ebox_[e].b1, x1[edges_[e][1]]);
+  }
+  tbox_.resize(tris_.size());
+  for (std::size_t t = 0; t < tris_.size(); ++t) {
+    tbox_[t] = vbox_[tris_[t][0]];
+    for (int k = 1; k < 3; ++k) {
+      extend(tbox_[t].b0, x0[tris_[t][k]]);
+      extend(tbox_[t].b1, x1[tris_[t][k]]);
+    }
+  }
+  // The tree sees the motion in a frame moving with the mean displacement D: contact is the
+  // same when every point at time t is moved by -t D, and the tree's float boxes are rounded
+  // outward by far more than the rounding of x1 - D.
+  Vec3 mean = Vec3::Zero();
+  for (std::size_t v = 0; v < x0.size(); ++v) mean += x1[v] - x0[v];
+  if (!x0.empty()) mean /= static_cast<double>(x0.size());
+  moved_.resize(x1.size());
+  for (std::size_t v = 0; v < x1.size(); ++v) moved_[v] = x1[v] - mean;
+  bvh_.refit(x0, moved_);
   bvh_.overlapping_pairs_with_neighbours(tri_pairs_);
   for (const auto& p : tri_pairs_) test_pair(p[0], p[1], x0, x1);
   sort_contacts(out_);

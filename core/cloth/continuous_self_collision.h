@@ -10,11 +10,13 @@
 ///  - continuous_self_collision_brute: every vertex-face and edge-edge pair, O(n^2) (engine
 ///    `core-brute`, the reference for tests);
 ///  - ContinuousSelfCollisionDetector: broad phase by the triangle box tree (triangle_bvh.h)
-///    refitted on swept boxes (each triangle's box over both frames), self-query keeping
-///    neighbouring triangles. Each vertex and each edge is owned by one triangle (the first
+///    refitted on swept boxes (each triangle's box over both frames, in a frame moving with
+///    the mesh's mean displacement, which changes no contact), self-query keeping
+///    neighbouring triangles, triangle pairs whose kinetic boxes never meet dropped. Each vertex and each edge is owned by one triangle (the first
 ///    that has it), and a primitive pair is tested only from the triangle pair of its owners,
 ///    so each pair is tested once (a swept box of a vertex or edge lies in its owner's). Then
-///    the primitives' own swept boxes, then the test.
+///    the primitives' own swept and kinetic boxes (the first stages of core's test,
+///    ccd_pipeline.h, on precomputed boxes: the same decisions), then the test.
 /// Output: vertex_face as (v, f), 0-based vertex and face indices, sorted; edge_edge as
 /// ((a, b), (c, d)) with a < b, c < d and (a, b) < (c, d), sorted lexicographically.
 /// Positions must be finite; both frames have the same size; no triangle repeats an index.
@@ -68,6 +70,8 @@ class ContinuousSelfCollisionDetector {
   /// Triangle pairs from the tree, and primitive pairs handed to the test, in the last detect().
   std::size_t last_triangle_pairs() const { return tri_pairs_.size(); }
   std::size_t last_tests() const { return tests_; }
+  /// Triangle pairs whose kinetic boxes may meet (their features were examined).
+  std::size_t last_kinetic_pairs() const { return kinetic_pairs_; }
 
  private:
   /// The features one triangle owns: up to three vertices and three edges (ids into edges_).
@@ -75,7 +79,13 @@ class ContinuousSelfCollisionDetector {
     int vertex[3], edge[3];
     int vertices = 0, edge_count = 0;
   };
+  /// A primitive's boxes at the two frames (lo xyz, hi xyz each).
+  struct Boxes {
+    double b0[6], b1[6];
+  };
   void test_pair(int i, int j, const std::vector<Vec3>& x0, const std::vector<Vec3>& x1);
+  /// The test's answer on a query whose boxes may_touch already accepted.
+  bool run(const CcdQuery& q) const;
 
   std::vector<std::array<int, 3>> tris_;
   std::vector<MeshEdge> edges_;
@@ -83,8 +93,9 @@ class ContinuousSelfCollisionDetector {
   CcdTest test_;
   TriangleBvh bvh_;
   std::vector<std::array<int, 2>> tri_pairs_;
-  std::vector<std::array<double, 6>> vbox_;  ///< per vertex: swept box lo xyz, hi xyz
-  std::size_t tests_ = 0;
+  std::vector<Boxes> vbox_, ebox_, tbox_;  ///< per vertex, edge, triangle
+  std::vector<Vec3> moved_;                 ///< x1 in the frame of the mean displacement
+  std::size_t tests_ = 0, kinetic_pairs_ = 0;
   ContinuousContacts out_;
 };
 

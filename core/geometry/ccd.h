@@ -7,7 +7,9 @@
 /// Stages, cheapest first (ccd_pipeline.cpp):
 ///  1. NaN or infinite coordinates: hit at toi = 0 (conservative; such a query has no
 ///     meaningful answer and a caller must not take it for a miss).
-///  2. Swept boxes disjoint along an axis (exact comparisons): miss (ccd_swept_boxes.h).
+///  2. Swept boxes disjoint along an axis (exact comparisons), or kinetic boxes (the boxes at
+///     t = 0 and 1 interpolated in time) that never overlap: miss (ccd_swept_boxes.h,
+///     ccd_kinetic_boxes.h; the second sees through motion the primitives share).
 ///  3. The query as differences of its points, translation-free, scaled by a power of two
 ///     (ccd_system.h); contact is F(t, u, v) = Z - u X - v Y = 0 with (u, v) in the face or on
 ///     both segments. All points equal at all times: hit at 0.
@@ -25,7 +27,8 @@
 ///     bound, exclude 0 are discarded; the others are split, earliest t first.
 ///
 /// Zero false negatives, by construction. Every "miss" is one of: disjoint swept boxes
-/// (exact); a polynomial whose Bernstein coefficients all exceed a rigorous bound on their
+/// (exact); kinetic boxes disjoint at every time (a linear program over t with widened
+/// constraints, ccd_kinetic_boxes.h); a polynomial whose Bernstein coefficients all exceed a rigorous bound on their
 /// rounding error (so the true polynomial has one sign on the interval: the coefficients
 /// bound it, Farouki and Rajan 1987), where that polynomial's sign rules out contact; or an
 /// inclusion box whose corner values all exceed their rounding bound on one side (the image

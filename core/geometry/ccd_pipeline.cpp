@@ -1,10 +1,12 @@
 #include "core/geometry/ccd_pipeline.h"
 
+#include "core/geometry/ccd_kinetic_boxes.h"
 #include "core/geometry/ccd_stats.h"
 #include "core/geometry/ccd_swept_boxes.h"
 #include "core/geometry/ccd_system.h"
 #include "core/geometry/ccd_time_search.h"
 
+#include <algorithm>
 #include <cfloat>
 #include <cmath>
 
@@ -29,7 +31,33 @@ bool finite_inputs(const CcdQuery& q) {
   return true;
 }
 
+/// The boxes of points [first, last) of x.
+void box_of(const std::array<Vec3, 4>& x, int first, int last, CcdBox& b) {
+  for (int c = 0; c < 3; ++c) {
+    double lo = x[first][c], hi = lo;
+    for (int i = first + 1; i < last; ++i) {
+      lo = std::min(lo, x[i][c]);
+      hi = std::max(hi, x[i][c]);
+    }
+    b[c] = lo;
+    b[c + 3] = hi;
+  }
+}
+
+/// ccd_kinetic_boxes_disjoint on the query's two primitives.
+bool kinetic_boxes_disjoint(const CcdQuery& q) {
+  const int split = q.kind == CcdKind::VertexFace ? 1 : 2;
+  CcdBox a0, a1, b0, b1;
+  box_of(q.x0, 0, split, a0);
+  box_of(q.x1, 0, split, a1);
+  box_of(q.x0, split, 4, b0);
+  box_of(q.x1, split, 4, b1);
+  return ccd_kinetic_boxes_disjoint(a0, a1, b0, b1);
+}
+
 }  // namespace
+
+CcdAnswer ccd_after_boxes(const CcdQuery& q, const CcdSettings& clamped);
 
 CcdSettings ccd_clamped(const CcdSettings& s) {
   const CcdSettings def;
@@ -51,10 +79,21 @@ CcdAnswer ccd_pipeline(const CcdQuery& q, const CcdSettings& clamped) {
     st.non_finite++;
     return {true, 0.0};
   }
-  if (ccd_swept_boxes_disjoint(q)) {
+  if (ccd_swept_boxes_disjoint(q) || kinetic_boxes_disjoint(q)) {
     st.box_rejections++;
     return {};
   }
+  return ccd_after_boxes(q, clamped);
+}
+
+CcdAnswer ccd_after_boxes(const CcdQuery& q) {
+  static const CcdSettings defaults = ccd_clamped(CcdSettings{});
+  ccd_stats().queries++;
+  return ccd_after_boxes(q, defaults);
+}
+
+CcdAnswer ccd_after_boxes(const CcdQuery& q, const CcdSettings& clamped) {
+  CcdStats& st = ccd_stats();
   CcdSystem s;
   switch (prepare_ccd_system(q, s)) {
     case CcdPrepared::NonFinite:
