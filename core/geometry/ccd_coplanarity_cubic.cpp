@@ -36,14 +36,26 @@ void ccd_coplanarity_cubic(const CcdSystem& s, double f[4], CcdErrorBound& err) 
   f[1] = (dot(x1, c00) + dot(x0, sum)) / 3.0;
   f[2] = (dot(x0, c11) + dot(x1, sum)) / 3.0;
   f[3] = dot(x1, c11);
-  // Permanents.
-  const V3 p00 = cross_abs(y0, z0), p11 = cross_abs(y1, z1);
-  const V3 psum = add(cross_abs(y1, z0), cross_abs(y0, z1));
-  const double p0 = dot_abs(x0, p00), p3 = dot_abs(x1, p11);
-  const double p1 = (dot_abs(x1, p00) + dot_abs(x0, psum)) / 3.0;
-  const double p2 = (dot_abs(x0, p11) + dot_abs(x1, psum)) / 3.0;
-  const double perm = std::max(std::max(p0, p1), std::max(p2, p3));
-  err.e0 = 0x1p-49 * perm + 0x1p-900;
+  // First a cheap bound: every coefficient is an average of determinants whose six terms are
+  // each at most mx my mz (the largest components of X, Y, Z over both times), so the
+  // permanent is at most 6 mx my mz. When the coefficients clear it, that bound certifies the
+  // cubic's sign; otherwise (near-coplanar motion) the permanents themselves are computed.
+  double m[3] = {0.0, 0.0, 0.0};
+  for (int v = 0; v < 3; ++v)
+    for (int time = 0; time < 2; ++time)
+      for (int c = 0; c < 3; ++c) m[v] = std::max(m[v], std::fabs(s.d[time][v][c]));
+  err.e0 = 0x1p-49 * (6.0 * (1.0 + 0x1p-50)) * (m[0] * m[1] * m[2]) + 0x1p-900;
+  const double lo = std::min(std::min(f[0], f[1]), std::min(f[2], f[3]));
+  const double hi = std::max(std::max(f[0], f[1]), std::max(f[2], f[3]));
+  if (!(lo > err.e0 || hi < -err.e0)) {
+    const V3 p00 = cross_abs(y0, z0), p11 = cross_abs(y1, z1);
+    const V3 psum = add(cross_abs(y1, z0), cross_abs(y0, z1));
+    const double p0 = dot_abs(x0, p00), p3 = dot_abs(x1, p11);
+    const double p1 = (dot_abs(x1, p00) + dot_abs(x0, psum)) / 3.0;
+    const double p2 = (dot_abs(x0, p11) + dot_abs(x1, psum)) / 3.0;
+    const double perm = std::max(std::max(p0, p1), std::max(p2, p3));
+    err.e0 = 0x1p-49 * perm + 0x1p-900;
+  }
   double big = 0.0;
   for (int i = 0; i < 4; ++i) big = std::max(big, std::fabs(f[i]));
   err.set_step(big);

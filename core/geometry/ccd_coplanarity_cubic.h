@@ -25,7 +25,9 @@ namespace tecido {
 /// term replaced by its absolute value), computed alongside; 16 eps times the computed
 /// permanent covers gamma_11 and the permanent's own rounding. Underflowing products add at
 /// most 2^-1075 each, times a third factor below 2^129 (ccd_system.h's scaling): 2^-900 in
-/// all is far more.
+/// all is far more. A cheaper bound, 6 mx my mz for the permanent (mx the largest component of
+/// X over both times, likewise my, mz), is tried first and kept when it already certifies the
+/// cubic's sign on [0, 1].
 void ccd_coplanarity_cubic(const CcdSystem& s, double f[4], CcdErrorBound& err);
 
 }  // namespace tecido

@@ -4,16 +4,17 @@
 
 namespace tecido {
 
-double ccd_cubic_root(const double b[4]) {
-  auto lerp = [](double x, double y, double s) { return (1.0 - s) * x + s * y; };
+double ccd_cubic_root(const double b[4], double tol) {
+  // Power basis (Horner is cheaper than de Casteljau; the result is only an approximation).
+  const double c0 = b[0], c1 = 3.0 * (b[1] - b[0]), c2 = 3.0 * (b[2] - 2.0 * b[1] + b[0]);
+  const double c3 = b[3] - 3.0 * b[2] + 3.0 * b[1] - b[0];
   const bool rising = b[0] < 0.0;  // p < 0 left of the root
   double lo = 0.0, hi = 1.0;
   double s = b[0] / (b[0] - b[3]);
   if (!(s > 0.0 && s < 1.0)) s = 0.5;
-  for (int it = 0; it < 60; ++it) {
-    const double l0 = lerp(b[0], b[1], s), l1 = lerp(b[1], b[2], s), l2 = lerp(b[2], b[3], s);
-    const double m0 = lerp(l0, l1, s), m1 = lerp(l1, l2, s);
-    const double p = lerp(m0, m1, s), dp = 3.0 * (m1 - m0);
+  for (int it = 0; it < 64; ++it) {
+    const double p = ((c3 * s + c2) * s + c1) * s + c0;
+    const double dp = (3.0 * c3 * s + 2.0 * c2) * s + c1;
     if (p == 0.0) return s;
     if ((p < 0.0) == rising) {
       lo = s;
@@ -22,7 +23,7 @@ double ccd_cubic_root(const double b[4]) {
     }
     double next = s - p / dp;
     if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
-    if (std::fabs(next - s) <= 0x1p-52 || hi - lo <= 0x1p-52) return next;
+    if (std::fabs(next - s) <= tol || hi - lo <= tol) return next;
     s = next;
   }
   return s;

@@ -6,9 +6,9 @@
 namespace tecido {
 
 /// A root in [0, 1] of p(s) = sum_i b_i B_i^3(s), given b[0] and b[3] nonzero of opposite
-/// signs: safeguarded Newton (regula falsi start, a bisection step whenever the Newton step
-/// leaves the bracket of a sign change; Press et al., Numerical Recipes, "rtsafe"), with p and
-/// p' by de Casteljau's algorithm. Converges quadratically when p is monotone on [0, 1].
-double ccd_cubic_root(const double b[4]);
+/// signs, to about tol: safeguarded Newton (regula falsi start, a bisection step whenever the
+/// Newton step leaves the bracket of a sign change; Press et al., Numerical Recipes,
+/// "rtsafe"), on the power form by Horner's rule. Converges quadratically when p is monotone.
+double ccd_cubic_root(const double b[4], double tol);
 
 }  // namespace tecido

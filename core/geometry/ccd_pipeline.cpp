@@ -2,7 +2,6 @@
 
 #include "core/geometry/ccd_kinetic_boxes.h"
 #include "core/geometry/ccd_stats.h"
-#include "core/geometry/ccd_swept_boxes.h"
 #include "core/geometry/ccd_system.h"
 #include "core/geometry/ccd_time_search.h"
 
@@ -14,50 +13,66 @@ namespace tecido {
 
 namespace {
 
-/// True when every coordinate is finite. The sum of all 24 (four partial sums) is finite
-/// whenever they are, unless it overflows: only then are they checked one by one.
-bool finite_inputs(const CcdQuery& q) {
-  double acc[4] = {0.0, 0.0, 0.0, 0.0};
-  for (int i = 0; i < 4; ++i)
-    for (int c = 0; c < 3; ++c) {
-      acc[i] += q.x0[i][c];
-      acc[i] += q.x1[i][c];
-    }
-  const double sum = (acc[0] + acc[1]) + (acc[2] + acc[3]);
-  if (std::fabs(sum) <= DBL_MAX) return true;
-  for (int i = 0; i < 4; ++i)
-    for (int c = 0; c < 3; ++c)
-      if (!std::isfinite(q.x0[i][c]) || !std::isfinite(q.x1[i][c])) return false;
-  return true;
-}
-
-/// The boxes of points [first, last) of x.
-void box_of(const std::array<Vec3, 4>& x, int first, int last, CcdBox& b) {
+/// The box of points [first, last) of x (lo xyz, hi xyz); adds their coordinates to sum.
+void box_of(const std::array<Vec3, 4>& x, int first, int last, CcdBox& b, double& sum) {
   for (int c = 0; c < 3; ++c) {
     double lo = x[first][c], hi = lo;
+    sum += lo;
     for (int i = first + 1; i < last; ++i) {
       lo = std::min(lo, x[i][c]);
       hi = std::max(hi, x[i][c]);
+      sum += x[i][c];
     }
     b[c] = lo;
     b[c + 3] = hi;
   }
 }
 
-/// ccd_kinetic_boxes_disjoint on the query's two primitives.
-bool kinetic_boxes_disjoint(const CcdQuery& q) {
+bool inputs_finite(const CcdQuery& q) {
+  for (const auto* x : {&q.x0, &q.x1})
+    for (const Vec3& p : *x)
+      if (!p.allFinite()) return false;
+  return true;
+}
+
+enum class Boxes { Finite, NonFinite, Disjoint };
+
+/// Stages 1 and 2 in one pass over the 24 coordinates: the primitives' boxes at t = 0 and 1
+/// (their unions are the swept boxes of ccd_swept_boxes.h, their interpolation the kinetic
+/// boxes of ccd_kinetic_boxes.h) and the sum of the coordinates, finite whenever they all are
+/// unless it overflows: only then are they checked one by one.
+Boxes box_stages(const CcdQuery& q) {
   const int split = q.kind == CcdKind::VertexFace ? 1 : 2;
   CcdBox a0, a1, b0, b1;
-  box_of(q.x0, 0, split, a0);
-  box_of(q.x1, 0, split, a1);
-  box_of(q.x0, split, 4, b0);
-  box_of(q.x1, split, 4, b1);
-  return ccd_kinetic_boxes_disjoint(a0, a1, b0, b1);
+  double sum[4] = {0.0, 0.0, 0.0, 0.0};
+  box_of(q.x0, 0, split, a0, sum[0]);
+  box_of(q.x1, 0, split, a1, sum[1]);
+  box_of(q.x0, split, 4, b0, sum[2]);
+  box_of(q.x1, split, 4, b1, sum[3]);
+  if (!(std::fabs((sum[0] + sum[1]) + (sum[2] + sum[3])) <= DBL_MAX) && !inputs_finite(q)) return Boxes::NonFinite;
+  for (int c = 0; c < 3; ++c) {
+    const double alo = std::min(a0[c], a1[c]), ahi = std::max(a0[c + 3], a1[c + 3]);
+    const double blo = std::min(b0[c], b1[c]), bhi = std::max(b0[c + 3], b1[c + 3]);
+    if (ahi < blo || bhi < alo) return Boxes::Disjoint;
+  }
+  return ccd_kinetic_boxes_disjoint(a0, a1, b0, b1) ? Boxes::Disjoint : Boxes::Finite;
+}
+
+CcdAnswer after_boxes(const CcdQuery& q, const CcdSettings& clamped, CcdStats& st) {
+  CcdSystem s;
+  switch (prepare_ccd_system(q, s)) {
+    case CcdPrepared::NonFinite:
+      st.non_finite++;
+      return {true, 0.0};
+    case CcdPrepared::AllCoincide:
+      return {true, 0.0};
+    case CcdPrepared::Ok:
+      break;
+  }
+  return ccd_time_search(s, clamped, st);
 }
 
 }  // namespace
-
-CcdAnswer ccd_after_boxes(const CcdQuery& q, const CcdSettings& clamped);
 
 CcdSettings ccd_clamped(const CcdSettings& s) {
   const CcdSettings def;
@@ -75,36 +90,24 @@ CcdSettings ccd_clamped(const CcdSettings& s) {
 CcdAnswer ccd_pipeline(const CcdQuery& q, const CcdSettings& clamped) {
   CcdStats& st = ccd_stats();
   st.queries++;
-  if (!finite_inputs(q)) {
-    st.non_finite++;
-    return {true, 0.0};
+  switch (box_stages(q)) {
+    case Boxes::NonFinite:
+      st.non_finite++;
+      return {true, 0.0};
+    case Boxes::Disjoint:
+      st.box_rejections++;
+      return {};
+    case Boxes::Finite:
+      break;
   }
-  if (ccd_swept_boxes_disjoint(q) || kinetic_boxes_disjoint(q)) {
-    st.box_rejections++;
-    return {};
-  }
-  return ccd_after_boxes(q, clamped);
+  return after_boxes(q, clamped, st);
 }
 
 CcdAnswer ccd_after_boxes(const CcdQuery& q) {
   static const CcdSettings defaults = ccd_clamped(CcdSettings{});
-  ccd_stats().queries++;
-  return ccd_after_boxes(q, defaults);
-}
-
-CcdAnswer ccd_after_boxes(const CcdQuery& q, const CcdSettings& clamped) {
   CcdStats& st = ccd_stats();
-  CcdSystem s;
-  switch (prepare_ccd_system(q, s)) {
-    case CcdPrepared::NonFinite:
-      st.non_finite++;
-      return {true, 0.0};
-    case CcdPrepared::AllCoincide:
-      return {true, 0.0};
-    case CcdPrepared::Ok:
-      break;
-  }
-  return ccd_time_search(s, clamped);
+  st.queries++;
+  return after_boxes(q, defaults, st);
 }
 
 }  // namespace tecido

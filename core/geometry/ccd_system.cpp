@@ -14,17 +14,18 @@ constexpr int kPairs[2][5][2] = {
     {{1, 0}, {2, 3}, {2, 0}, {1, 2}, {0, 3}},  // edge-edge (a0, a1, b0, b1): a1-a0, b0-b1, b0-a0, a1-b0, a0-b1
 };
 
-/// Fills s.d with the differences of the points, each point first multiplied by `scale` (a
-/// power of two). Returns the largest |component| and, in sum, the sum of all |components|
-/// (NaN or infinite when an input is, or when a difference overflowed).
-double differences(const CcdQuery& q, double scale, CcdSystem& s, double& sum) {
-  const auto& pr = kPairs[q.kind == CcdKind::VertexFace ? 0 : 1];
+/// Fills s.d with the differences of the points of kind K (0 vertex-face, 1 edge-edge), each
+/// point first multiplied by `scale` (a power of two). Returns the largest |component| and, in
+/// sum, the sum of all |components| (NaN or infinite when an input is, or when a difference
+/// overflowed). The indices are compile-time constants, so the loops unroll.
+template <int K>
+double differences_of(const CcdQuery& q, double scale, CcdSystem& s, double& sum) {
   double m = 0.0, acc[2] = {0.0, 0.0};
   for (int time = 0; time < 2; ++time) {
     const std::array<Vec3, 4>& x = time == 0 ? q.x0 : q.x1;
     for (int k = 0; k < 5; ++k) {
       for (int c = 0; c < 3; ++c) {
-        const double v = x[pr[k][0]][c] * scale - x[pr[k][1]][c] * scale;
+        const double v = x[kPairs[K][k][0]][c] * scale - x[kPairs[K][k][1]][c] * scale;
         s.d[time][k][c] = v;
         const double a = std::fabs(v);
         m = a > m ? a : m;
@@ -34,6 +35,10 @@ double differences(const CcdQuery& q, double scale, CcdSystem& s, double& sum) {
   }
   sum = acc[0] + acc[1];
   return m;
+}
+
+double differences(const CcdQuery& q, double scale, CcdSystem& s, double& sum) {
+  return q.kind == CcdKind::VertexFace ? differences_of<0>(q, scale, s, sum) : differences_of<1>(q, scale, s, sum);
 }
 
 bool inputs_finite(const CcdQuery& q) {

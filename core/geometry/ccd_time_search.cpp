@@ -5,7 +5,6 @@
 #include "core/geometry/ccd_cubic_root.h"
 #include "core/geometry/ccd_inclusion.h"
 #include "core/geometry/ccd_projected_quadratics.h"
-#include "core/geometry/ccd_stats.h"
 
 #include <algorithm>
 #include <cmath>
@@ -23,7 +22,7 @@ constexpr double kMinWidth = 0x1p-50;
 
 class TimeSearch {
  public:
-  TimeSearch(const CcdSystem& s, const CcdSettings& st) : s_(s), settings_(st) {
+  TimeSearch(const CcdSystem& s, const CcdSettings& st, CcdStats& stats) : s_(s), settings_(st), stats_(stats) {
     delta_ = st.distance_tolerance * s.scale;
     // Barycentric slack whose effect on the contact point is at most delta / 2: the point
     // moves by at most 5 beta max(|X|, |Y|) <= 5 sqrt(3) beta L (vertex-face; edge-edge
@@ -35,13 +34,13 @@ class TimeSearch {
     CcdBernsteinSet p;
     ccd_coplanarity_cubic(s_, p.f, ef_);
     if (ccd_certified_sign(p.f, 4, 1, ef_.e0) != 0) {
-      ccd_stats().cubic_rejections++;
+      stats_.cubic_rejections++;
       return {};
     }
     ccd_projected_quadratics(s_, p.q, pq_);
     all_inside_ = ((1u << pq_.count) - 1) & ~1u;
     visit(0.0, 1.0, 0, p, Known{}, true);
-    ccd_stats().time_search_nodes += static_cast<unsigned long long>(nodes_);
+    stats_.time_search_nodes += static_cast<unsigned long long>(nodes_);
     return answer_;
   }
 
@@ -82,7 +81,8 @@ class TimeSearch {
       jump_ok = o == kNotApplicable;  // a failed bracket would fail again below
     }
     const bool leaf = hi - lo <= settings_.time_tolerance;
-    if (leaf && kn.sd != 0 && hit_at_leaf(p, kn, ef, eq)) return hit(lo);
+    if (kn.sd != 0 && ((leaf && crossing_inside(p, kn, ef, eq)) || near_ends(lo, hi, depth, p.f, p.q, kn, ef, eq)))
+      return true;
     const bool den_vanishes = kn.sd == 0 && std::fabs(p.q[0][0]) <= 2.0 * eq[0] &&
                               std::fabs(p.q[1][0]) <= 2.0 * eq[0] && std::fabs(p.q[2][0]) <= 2.0 * eq[0];
     if (hi - lo <= kMinWidth || den_vanishes || nodes_ >= kMaxNodes) return inclusion(lo, hi);
@@ -104,11 +104,11 @@ class TimeSearch {
       if (o == kMiss || o == kHit) return o == kHit;
       jump_ok = o == kNotApplicable;
     }
-    if (hi - lo <= settings_.time_tolerance) {
-      if ((f[0] > ef && f[3] < -ef) || (f[0] < -ef && f[3] > ef)) return hit(lo);  // rule 3a
-      for (const double fe : {f[0], f[3]})
-        if (std::fabs(fe) + ef <= 0.5 * delta_ * den_low) return hit(lo);  // rule 3b
-    }
+    if (hi - lo <= settings_.time_tolerance && ((f[0] > ef && f[3] < -ef) || (f[0] < -ef && f[3] > ef)))
+      return hit(lo);  // rule 3a
+    Known kn;
+    kn.den_low = den_low;
+    if (near_ends(lo, hi, depth, f, nullptr, kn, ef, nullptr)) return true;  // rule 3b
     if (hi - lo <= kMinWidth || nodes_ >= kMaxNodes) return inclusion(lo, hi);
     ++nodes_;
     const double m01 = (f[0] + f[1]) * 0.5, m12 = (f[1] + f[2]) * 0.5, m23 = (f[2] + f[3]) * 0.5;
@@ -139,7 +139,8 @@ class TimeSearch {
       if (!(-s0 * d > 2.0 * ef + 0x1p-50 * std::fabs(d) + 0x1p-1000)) return kNotApplicable;
     }
     const double w = hi - lo, e1 = ef_.at(depth + 1);
-    const double tr = lo + ccd_cubic_root(f) * w;
+    // The bracket below needs the root to a quarter of its smallest step, 2^-46.
+    const double tr = lo + ccd_cubic_root(f, std::max(0x1p-48 / w, 0x1p-52)) * w;
     double a = 0.0, b = 0.0, sa = 0.0, sb = 0.0;
     bool bracketed = false;
     for (double h = 0x1p-46; h <= 0.25 * settings_.time_tolerance && 3.0 * h < w; h *= 16.0) {
@@ -176,37 +177,55 @@ class TimeSearch {
 
   bool hit(double lo) {
     answer_ = {true, lo};
-    ccd_stats().time_search_hits++;
+    stats_.time_search_hits++;
     return true;
   }
 
   /// Rules 3a and 3b of ccd_time_search.h on a leaf where den has the certain sign kn.sd.
-  bool hit_at_leaf(const CcdBernsteinSet& p, const Known& kn, double ef, const double eq[]) const {
-    const int sd = kn.sd;
-    // 3a: a certain sign change of f, every numerator above -beta |den| all over the leaf.
-    if ((p.f[0] > ef && p.f[3] < -ef) || (p.f[0] < -ef && p.f[3] > ef)) {
-      bool inside = true;
-      for (int k = 1; k < pq_.count && inside; ++k) {
-        if (kn.inside & (1u << k)) continue;
-        for (int j = 0; j < 3; ++j) inside = inside && sd * p.q[j][k] >= eq[k] - beta_ * kn.den_low;
-      }
-      if (inside) return true;
+  /// Rule 3a on a leaf where den has the certain sign kn.sd: a certain sign change of f, and
+  /// every numerator above -beta |den| all over the leaf.
+  bool crossing_inside(const CcdBernsteinSet& p, const Known& kn, double ef, const double eq[]) const {
+    if (!((p.f[0] > ef && p.f[3] < -ef) || (p.f[0] < -ef && p.f[3] > ef))) return false;
+    for (int k = 1; k < pq_.count; ++k) {
+      if (kn.inside & (1u << k)) continue;
+      for (int j = 0; j < 3; ++j)
+        if (!(kn.sd * p.q[j][k] >= eq[k] - beta_ * kn.den_low)) return false;
     }
-    // 3b: near contact at an end of the leaf.
-    for (int j : {0, 2}) {
-      const double den = std::max(kn.den_low, sd * p.q[j][0] - eq[0]);
-      const double fe = p.f[j == 0 ? 0 : 3];
-      if (!(std::fabs(fe) + ef <= 0.5 * delta_ * den)) continue;
-      bool inside = true;
-      for (int k = 1; k < pq_.count; ++k)
-        inside = inside && ((kn.inside & (1u << k)) || sd * p.q[j][k] >= eq[k] - beta_ * den);
-      if (inside) return true;
-    }
-    return false;
+    return true;
+  }
+
+  /// Rule 3b at the interval's end j (0: lo, 2: hi; q == nullptr when every numerator is known
+  /// inside): |f| / |den| <= delta / 2 and every numerator >= -beta |den| there, so the
+  /// primitives are within delta of each other at that instant.
+  bool near_at(const double f[4], const double (*q)[kCcdMaxQuadratics], const Known& kn, double ef, const double eq[],
+               int j) const {
+    const double den = q == nullptr ? kn.den_low : std::max(kn.den_low, kn.sd * q[j][0] - eq[0]);
+    if (!(std::fabs(f[j == 0 ? 0 : 3]) + ef <= 0.5 * delta_ * den)) return false;
+    if (q == nullptr) return true;
+    for (int k = 1; k < pq_.count; ++k)
+      if (!((kn.inside & (1u << k)) || kn.sd * q[j][k] >= eq[k] - beta_ * den)) return false;
+    return true;
+  }
+
+  /// Rule 3b at the ends of [lo, hi] (den's sign known): a near contact at lo is a hit at lo
+  /// whatever the width; one at hi is a hit at lo on a leaf, or at hi - tau when the cubic
+  /// restricted to [lo, hi - tau] is certainly nonzero (no coplanar instant before). Sets
+  /// answer_ and returns true on a hit.
+  bool near_ends(double lo, double hi, int depth, const double f[4], const double (*q)[kCcdMaxQuadratics],
+                 const Known& kn, double ef, const double eq[]) {
+    if (near_at(f, q, kn, ef, eq, 0)) return hit(lo);
+    if (!near_at(f, q, kn, ef, eq, 2)) return false;
+    const double tau = settings_.time_tolerance, w = hi - lo;
+    if (w <= tau) return hit(lo);
+    double fr[4];
+    ccd_restrict_cubic(f, 0.0, (w - tau) / w, fr);
+    const double e1 = ef_.at(depth + 1);
+    const bool certain = ccd_certified_sign(fr, 4, 1, e1) != 0;
+    return certain && hit(hi - tau);
   }
 
   bool inclusion(double lo, double hi) {
-    CcdStats& st = ccd_stats();
+    CcdStats& st = stats_;
     st.inclusion_calls++;
     const CcdInclusionResult r = ccd_inclusion_search(s_, lo, hi, delta_, settings_.time_tolerance, settings_.max_boxes);
     st.inclusion_boxes += static_cast<unsigned long long>(r.boxes);
@@ -218,6 +237,7 @@ class TimeSearch {
 
   const CcdSystem& s_;
   const CcdSettings& settings_;
+  CcdStats& stats_;
   double delta_ = 0.0, beta_ = 0.0;
   int nodes_ = 0;
   unsigned all_inside_ = 0;  ///< the bits of every numerator
@@ -228,8 +248,8 @@ class TimeSearch {
 
 }  // namespace
 
-CcdAnswer ccd_time_search(const CcdSystem& s, const CcdSettings& settings) {
-  TimeSearch search(s, settings);
+CcdAnswer ccd_time_search(const CcdSystem& s, const CcdSettings& settings, CcdStats& stats) {
+  TimeSearch search(s, settings, stats);
   return search.run();
 }
 

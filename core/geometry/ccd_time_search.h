@@ -23,11 +23,13 @@
 /// hit is never later than the true time of impact.
 #include "core/geometry/ccd_query.h"
 #include "core/geometry/ccd_settings.h"
+#include "core/geometry/ccd_stats.h"
 #include "core/geometry/ccd_system.h"
 
 namespace tecido {
 
-/// Runs the time search on a prepared system. settings must already be clamped (ccd.h).
-CcdAnswer ccd_time_search(const CcdSystem& s, const CcdSettings& settings);
+/// Runs the time search on a prepared system. settings must already be clamped (ccd.h);
+/// stats (this thread's ccd_stats()) receives the counts.
+CcdAnswer ccd_time_search(const CcdSystem& s, const CcdSettings& settings, CcdStats& stats);
 
 }  // namespace tecido
