@@ -37,10 +37,12 @@ bool inputs_finite(const CcdQuery& q) {
 
 enum class Boxes { Finite, NonFinite, Disjoint };
 
-/// Stages 1 and 2 in one pass over the 24 coordinates: the primitives' boxes at t = 0 and 1
-/// (their unions are the swept boxes of ccd_swept_boxes.h, their interpolation the kinetic
-/// boxes of ccd_kinetic_boxes.h) and the sum of the coordinates, finite whenever they all are
-/// unless it overflows: only then are they checked one by one.
+/// Stages 1 and 2 in one pass over the 24 coordinates: the primitives' boxes at t = 0 and 1,
+/// and the sum of the coordinates (finite whenever they all are, unless it overflows: only
+/// then are they checked one by one). The union of a primitive's two boxes is its swept box:
+/// it contains the primitive at every t (each point moves on the segment between its
+/// positions, and a box is convex), so disjoint swept boxes (exact comparisons) mean no
+/// contact. Then the kinetic boxes (ccd_kinetic_boxes.h), which also see through shared motion.
 Boxes box_stages(const CcdQuery& q) {
   const int split = q.kind == CcdKind::VertexFace ? 1 : 2;
   CcdBox a0, a1, b0, b1;
