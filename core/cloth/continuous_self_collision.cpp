@@ -133,7 +133,43 @@ ContinuousSelfCollisionDetector::ContinuousSelfCollisionDetector(const std::vect
       }
     }
   }
+  list_neighbour_features(nv);
   bvh_.build(x_build, tris_);
+}
+
+void ContinuousSelfCollisionDetector::list_neighbour_features(int vertex_count) {
+  // Triangles around each vertex (CSR), then every pair of distinct triangles sharing one.
+  std::vector<int> start(vertex_count + 1, 0), around(3 * tris_.size());
+  for (const auto& t : tris_)
+    for (int v : t) ++start[v + 1];
+  for (int v = 0; v < vertex_count; ++v) start[v + 1] += start[v];
+  std::vector<int> fill(start.begin(), start.end() - 1);
+  for (std::size_t t = 0; t < tris_.size(); ++t)
+    for (int v : tris_[t]) around[fill[v]++] = static_cast<int>(t);
+  std::vector<std::array<int, 2>> neighbours;
+  for (int v = 0; v < vertex_count; ++v)
+    for (int a = start[v]; a < start[v + 1]; ++a)
+      for (int b = a + 1; b < start[v + 1]; ++b) neighbours.push_back({around[a], around[b]});
+  std::sort(neighbours.begin(), neighbours.end());
+  neighbours.erase(std::unique(neighbours.begin(), neighbours.end()), neighbours.end());
+  // Their feature pairs, chosen exactly as test_pair chooses them (each primitive pair comes
+  // from the triangle pair of its owners), without the boxes.
+  for (const auto& [i, j] : neighbours) {
+    for (int side = 0; side < 2; ++side) {
+      const Owned& o = owned_[side == 0 ? i : j];
+      const int f = side == 0 ? j : i;
+      for (int k = 0; k < o.vertices; ++k)
+        if (!has_vertex(tris_[f], o.vertex[k])) near_vf_.push_back({o.vertex[k], f});
+    }
+    for (int a = 0; a < owned_[i].edge_count; ++a) {
+      for (int b = 0; b < owned_[j].edge_count; ++b) {
+        int ea = owned_[i].edge[a], eb = owned_[j].edge[b];
+        if (share_vertex(edges_[ea], edges_[eb])) continue;
+        if (edges_[eb] < edges_[ea]) std::swap(ea, eb);
+        near_ee_.push_back({ea, eb});
+      }
+    }
+  }
 }
 
 bool ContinuousSelfCollisionDetector::run(const CcdQuery& q) const {
@@ -209,8 +245,18 @@ const ContinuousContacts& ContinuousSelfCollisionDetector::detect(const std::vec
   moved_.resize(x1.size());
   for (std::size_t v = 0; v < x1.size(); ++v) moved_[v] = x1[v] - mean;
   bvh_.refit(x0, moved_);
-  bvh_.overlapping_pairs_with_neighbours(tri_pairs_);
+  bvh_.overlapping_pairs(tri_pairs_);  // pairs sharing no vertex; neighbours are listed
   for (const auto& p : tri_pairs_) test_pair(p[0], p[1], x0, x1);
+  for (const auto& [v, f] : near_vf_) {
+    if (!may_touch(vbox_[v], tbox_[f])) continue;
+    ++tests_;
+    if (run(vertex_face_query(x0, x1, v, tris_[f]))) out_.vertex_face.push_back({v, f});
+  }
+  for (const auto& [ea, eb] : near_ee_) {
+    if (!may_touch(ebox_[ea], ebox_[eb])) continue;
+    ++tests_;
+    if (run(edge_edge_query(x0, x1, edges_[ea], edges_[eb]))) out_.edge_edge.push_back({edges_[ea], edges_[eb]});
+  }
   sort_contacts(out_);
   return out_;
 }

@@ -9,14 +9,15 @@
 /// Two drivers with identical output:
 ///  - continuous_self_collision_brute: every vertex-face and edge-edge pair, O(n^2) (engine
 ///    `core-brute`, the reference for tests);
-///  - ContinuousSelfCollisionDetector: broad phase by the triangle box tree (triangle_bvh.h)
-///    refitted on swept boxes (each triangle's box over both frames, in a frame moving with
-///    the mesh's mean displacement, which changes no contact), self-query keeping
-///    neighbouring triangles, triangle pairs whose kinetic boxes never meet dropped. Each vertex and each edge is owned by one triangle (the first
-///    that has it), and a primitive pair is tested only from the triangle pair of its owners,
-///    so each pair is tested once (a swept box of a vertex or edge lies in its owner's). Then
-///    the primitives' own swept and kinetic boxes (the first stages of core's test,
-///    ccd_pipeline.h, on precomputed boxes: the same decisions), then the test.
+///  - ContinuousSelfCollisionDetector: each vertex and each edge is owned by one triangle (the
+///    first that has it), and a primitive pair is tested only from the triangle pair of its
+///    owners, so each pair is tested once. Owners that share a vertex (neighbours) are known
+///    from the topology: their feature pairs are listed once at construction. The others come
+///    from the triangle box tree (triangle_bvh.h) refitted on swept boxes (each triangle's box
+///    over both frames, which contains its owned features' at every time, in a frame moving
+///    with the mesh's mean displacement, which changes no contact), pairs whose kinetic boxes
+///    never meet dropped. Then the primitives' own swept and kinetic boxes (the first stages
+///    of core's test, ccd_pipeline.h, on the same numbers: the same decisions), then the test.
 /// Output: vertex_face as (v, f), 0-based vertex and face indices, sorted; edge_edge as
 /// ((a, b), (c, d)) with a < b, c < d and (a, b) < (c, d), sorted lexicographically.
 /// Positions must be finite; both frames have the same size; no triangle repeats an index.
@@ -67,7 +68,8 @@ class ContinuousSelfCollisionDetector {
   /// The pairs that may touch during the motion from x0 to x1 (valid until the next call).
   const ContinuousContacts& detect(const std::vector<Vec3>& x0, const std::vector<Vec3>& x1);
 
-  /// Triangle pairs from the tree, and primitive pairs handed to the test, in the last detect().
+  /// Triangle pairs from the tree (not sharing a vertex), and primitive pairs handed to the
+  /// test, in the last detect().
   std::size_t last_triangle_pairs() const { return tri_pairs_.size(); }
   std::size_t last_tests() const { return tests_; }
   /// Triangle pairs whose kinetic boxes may meet (their features were examined).
@@ -84,6 +86,8 @@ class ContinuousSelfCollisionDetector {
     double b0[6], b1[6];
   };
   void test_pair(int i, int j, const std::vector<Vec3>& x0, const std::vector<Vec3>& x1);
+  /// Fills near_vf_, near_ee_ with the feature pairs of triangles that share a vertex.
+  void list_neighbour_features(int vertex_count);
   /// The test's answer on a query whose boxes may_touch already accepted.
   bool run(const CcdQuery& q) const;
 
@@ -95,6 +99,8 @@ class ContinuousSelfCollisionDetector {
   std::vector<std::array<int, 2>> tri_pairs_;
   std::vector<Boxes> vbox_, ebox_, tbox_;  ///< per vertex, edge, triangle
   std::vector<Vec3> moved_;                 ///< x1 in the frame of the mean displacement
+  std::vector<std::array<int, 2>> near_vf_;  ///< (vertex, face) of neighbouring owners
+  std::vector<std::array<int, 2>> near_ee_;  ///< (edge, edge) ids of neighbouring owners, in pair order
   std::size_t tests_ = 0, kinetic_pairs_ = 0;
   ContinuousContacts out_;
 };

@@ -321,7 +321,6 @@ unsigned TriangleBvh::lanes_sharing(const LeafVerts& b, int v0, int v1, int v2) 
 #endif
 }
 
-template <bool kSkipSharing>
 inline void TriangleBvh::leaf_pairs(int a, int b, bool wide, std::vector<std::array<int, 2>>& out) const {
   const Node& na = nodes_[a];
   const Node& nb = nodes_[b];
@@ -332,16 +331,14 @@ inline void TriangleBvh::leaf_pairs(int a, int b, bool wide, std::vector<std::ar
   unsigned mask = 0;
 #if TECIDO_BVH_AVX512
   if (wide) {
-    mask = kSkipSharing ? leaf_mask16_avx512(na.lo[0], na.hi[0], nb.lo[0], nb.hi[0], la.v[0], lb.v[0])
-                        : box_mask16_avx512(na.lo[0], na.hi[0], nb.lo[0], nb.hi[0]);
+    mask = leaf_mask16_avx512(na.lo[0], na.hi[0], nb.lo[0], nb.hi[0], la.v[0], lb.v[0]);
   } else
 #endif
   {
     for (int k = 0; k < kWidth; ++k) {
       const float lo[3] = {na.lo[0][k], na.lo[1][k], na.lo[2][k]};
       const float hi[3] = {na.hi[0][k], na.hi[1][k], na.hi[2][k]};
-      unsigned m = lanes_overlapping(nb, lo, hi);
-      if (kSkipSharing) m &= ~lanes_sharing(lb, la.v[0][k], la.v[1][k], la.v[2][k]);
+      const unsigned m = lanes_overlapping(nb, lo, hi) & ~lanes_sharing(lb, la.v[0][k], la.v[1][k], la.v[2][k]);
       mask |= m << (kWidth * k);
     }
   }
@@ -357,16 +354,11 @@ inline void TriangleBvh::leaf_pairs(int a, int b, bool wide, std::vector<std::ar
   }
 }
 
-void TriangleBvh::overlapping_pairs(std::vector<std::array<int, 2>>& out) { pairs<true>(out); }
-
-void TriangleBvh::overlapping_pairs_with_neighbours(std::vector<std::array<int, 2>>& out) { pairs<false>(out); }
-
-template <bool kSkipSharing>
-void TriangleBvh::pairs(std::vector<std::array<int, 2>>& out) {
+void TriangleBvh::overlapping_pairs(std::vector<std::array<int, 2>>& out) {
   if (nodes_.empty()) return;
   const bool wide = use_wide_ && wide_kernel_available();
   if (nodes_[0].leaf) {
-    leaf_pairs<kSkipSharing>(0, 0, wide, out);
+    leaf_pairs(0, 0, wide, out);
     return;
   }
   // Node pairs still to visit are pairs of internal nodes, or a leaf with an internal node: a
@@ -418,7 +410,7 @@ void TriangleBvh::pairs(std::vector<std::array<int, 2>>& out) {
         for (int k = 0; k < na.count; ++k) {
           const int c = na.child[k];
           if ((na.leaf_kids >> k) & 1u) {
-            leaf_pairs<kSkipSharing>(c, c, wide, out);
+            leaf_pairs(c, c, wide, out);
           } else {
             stack[top++] = pack(c, c);
           }
@@ -428,7 +420,7 @@ void TriangleBvh::pairs(std::vector<std::array<int, 2>>& out) {
         const int bit = lowest_bit(mask);
         const int k = bit / kWidth, l = bit % kWidth;
         if ((na.leaf_kids >> k) & (nb.leaf_kids >> l) & 1u) {
-          leaf_pairs<kSkipSharing>(na.child[k], nb.child[l], wide, out);
+          leaf_pairs(na.child[k], nb.child[l], wide, out);
         } else {
           stack[top++] = pack(na.child[k], nb.child[l]);
         }
@@ -439,7 +431,7 @@ void TriangleBvh::pairs(std::vector<std::array<int, 2>>& out) {
       for (unsigned m = lanes_overlapping(nb, node_box_[a].lo, node_box_[a].hi); m; m &= m - 1) {
         const int l = lowest_bit(m);
         if ((nb.leaf_kids >> l) & 1u) {
-          leaf_pairs<kSkipSharing>(a, nb.child[l], wide, out);
+          leaf_pairs(a, nb.child[l], wide, out);
         } else {
           stack[top++] = pack(a, nb.child[l]);
         }
@@ -449,7 +441,7 @@ void TriangleBvh::pairs(std::vector<std::array<int, 2>>& out) {
       for (unsigned m = lanes_overlapping(na, node_box_[b].lo, node_box_[b].hi); m; m &= m - 1) {
         const int k = lowest_bit(m);
         if ((na.leaf_kids >> k) & 1u) {
-          leaf_pairs<kSkipSharing>(na.child[k], b, wide, out);
+          leaf_pairs(na.child[k], b, wide, out);
         } else {
           stack[top++] = pack(na.child[k], b);
         }

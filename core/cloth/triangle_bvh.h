@@ -54,12 +54,6 @@ class TriangleBvh {
   /// (traversal) order. Uses the boxes of the last build()/refit().
   void overlapping_pairs(std::vector<std::array<int, 2>>& out);
 
-  /// The same, keeping the pairs that share vertices too (every pair of distinct triangles
-  /// whose boxes overlap): continuous collision tests the features of neighbouring triangles
-  /// that do not share a vertex (a vertex against the face next to it, two edges of
-  /// neighbouring triangles).
-  void overlapping_pairs_with_neighbours(std::vector<std::array<int, 2>>& out);
-
   /// The leaf and node-pair masks use one 16-lane AVX-512 pass when the CPU has AVX-512F
   /// (checked at run time), SSE2 otherwise; the output does not depend on the path. Tests can
   /// switch the wide path off to compare both.
@@ -92,19 +86,14 @@ class TriangleBvh {
 
   int build_node(int node, int begin, int end, const std::vector<Vec3>& centroid, std::vector<int>& order,
                  const std::vector<std::array<int, 3>>& triangles);
-  /// Appends the triangle pairs of leaves a and b (a == b: the leaf with itself), without the
-  /// pairs that share a vertex when kSkipSharing.
-  template <bool kSkipSharing>
+  /// Appends the triangle pairs of leaves a and b (a == b: the leaf with itself).
   void leaf_pairs(int a, int b, bool wide, std::vector<std::array<int, 2>>& out) const;
-  /// The self-query of overlapping_pairs (kSkipSharing) and overlapping_pairs_with_neighbours.
-  template <bool kSkipSharing>
-  void pairs(std::vector<std::array<int, 2>>& out);
-  /// Box refit from the per-vertex bounds vlo_, vhi_.
-  void refit_from_vertex_bounds();
   /// Bit k set when lane k of node b overlaps box (lo, hi).
   static unsigned lanes_overlapping(const Node& b, const float lo[3], const float hi[3]);
   /// Bit k set when triangle (v0, v1, v2) shares a vertex with lane k's triangle of leaf b.
   static unsigned lanes_sharing(const LeafVerts& b, int v0, int v1, int v2);
+  /// Box refit from the per-vertex bounds vlo_, vhi_.
+  void refit_from_vertex_bounds();
 
   std::size_t tri_count_ = 0;
   std::vector<Node> nodes_;          ///< nodes_[0] is the root; children after their parent

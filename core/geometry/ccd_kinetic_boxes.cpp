@@ -5,7 +5,17 @@
 
 namespace tecido {
 
+namespace {
+/// True when the closed boxes overlap (exact comparisons).
+bool overlap(const CcdBox& a, const CcdBox& b) {
+  return a[0] <= b[3] && b[0] <= a[3] && a[1] <= b[4] && b[1] <= a[4] && a[2] <= b[5] && b[2] <= a[5];
+}
+}  // namespace
+
 bool ccd_kinetic_boxes_disjoint(const CcdBox& a0, const CcdBox& a1, const CcdBox& b0, const CcdBox& b1) {
+  // Overlapping at t = 0 or t = 1 (exactly): not disjoint, as the widened test below would
+  // also find; the common case for neighbours, decided without it.
+  if (overlap(a0, b0) || overlap(a1, b1)) return false;
   // The six constraints, widened, at t = 0 (a) and t = 1 (b): k = 2c for hi_B - lo_A, 2c + 1
   // for hi_A - lo_B.
   double a[6], b[6];
