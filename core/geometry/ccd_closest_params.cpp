@@ -8,6 +8,8 @@ namespace {
 
 double dot(const double a[3], const double b[3]) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
 double clamp01(double s) { return s < 0.0 ? 0.0 : (s > 1.0 ? 1.0 : s); }
+/// n / d in [0, 1], 0 when d is 0 (a zero-length edge: any parameter is as close).
+double ratio01(double n, double d) { return d > 0.0 ? clamp01(n / d) : 0.0; }
 
 /// |z - s e|^2 at the best s in [0, 1]; the parameter in s.
 double closest_on_segment(const double e[3], const double z[3], double& s) {
@@ -53,7 +55,7 @@ void ccd_closest_on_triangle(const double x[3], const double y[3], const double 
   }
   const double vc = d1 * d4 - d3 * d2;
   if (vc <= 0.0 && d1 >= 0.0 && d3 <= 0.0) {  // edge ab
-    u = d1 / (d1 - d3);
+    u = ratio01(d1, d1 - d3);  // d1 - d3 = |X|^2
     return;
   }
   const double cp[3] = {z[0] - y[0], z[1] - y[1], z[2] - y[2]};
@@ -64,12 +66,12 @@ void ccd_closest_on_triangle(const double x[3], const double y[3], const double 
   }
   const double vb = d5 * d2 - d1 * d6;
   if (vb <= 0.0 && d2 >= 0.0 && d6 <= 0.0) {  // edge ac
-    v = d2 / (d2 - d6);
+    v = ratio01(d2, d2 - d6);  // d2 - d6 = |Y|^2
     return;
   }
   const double va = d3 * d6 - d5 * d4;
   if (va <= 0.0 && d4 - d3 >= 0.0 && d5 - d6 >= 0.0) {  // edge bc
-    v = (d4 - d3) / ((d4 - d3) + (d5 - d6));
+    v = ratio01(d4 - d3, (d4 - d3) + (d5 - d6));  // the denominator is |Y - X|^2
     u = 1.0 - v;
     return;
   }

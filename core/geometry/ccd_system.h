@@ -33,7 +33,8 @@ enum class CcdPrepared {
 };
 
 /// Fills s from q: the differences above, scaled by a power of two so that the largest
-/// component lies in [2^-128, 2^128] (the error bounds of ccd_bernstein_bounds.h rely on it).
+/// component lies in [2^-128, 2^128] (the underflow pads of the error bounds in
+/// ccd_coplanarity_cubic.h, ccd_projected_quadratics.h and ccd_inclusion.h rely on it).
 CcdPrepared prepare_ccd_system(const CcdQuery& q, CcdSystem& s);
 
 }  // namespace tecido
