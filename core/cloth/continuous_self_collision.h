@@ -6,7 +6,9 @@
 /// its distance tolerance may be included). Discrete self-collision (self_collision.h) looks at
 /// one instant; a cloth can pass through itself within one step with both frames clean.
 ///
-/// Two drivers with identical output:
+/// Two drivers with identical output (for core's test, and for any test that answers miss
+/// when two primitives' swept or kinetic boxes are disjoint, as every test should: such
+/// primitives cannot touch; the broad phase never asks it about them):
 ///  - continuous_self_collision_brute: every vertex-face and edge-edge pair, O(n^2) (engine
 ///    `core-brute`, the reference for tests);
 ///  - ContinuousSelfCollisionDetector: each vertex and each edge is owned by one triangle (the
