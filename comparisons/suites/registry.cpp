@@ -3,7 +3,7 @@
 #include "comparisons/suites/order/order_suite.h"
 #include "comparisons/suites/plane_suite.h"
 #include "comparisons/suites/selfcollision_suite.h"
-#include "comparisons/suites/stability_suite.h"
+#include "comparisons/suites/stability/stability_suite.h"
 #include "comparisons/suites/tradeoff_suite.h"
 #include "comparisons/suites/tritri_suite.h"
 #include "comparisons/suites/suite.h"
