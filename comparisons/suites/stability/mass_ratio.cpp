@@ -70,7 +70,7 @@ void system_row(const Settings& s, const System& sys, bool reference, std::vecto
     const StableStep st = max_step(s, sys, k);
     const std::string where = fmt::format("{}, {}", sys.label, integrator_name(k));
     io::Json& d = res.data["mass_ratio"][sys.label][integrator_name(k)];
-    d = {{"found", st.found}, {"omega_max", sys.omega_max}};
+    d = {{"found", st.found}, {"omega_max", sys.omega_max}, {"reference", reference}};
     if (!st.found) {
       ratios.missing(fmt::format("no stable step ({}; unstable down to h = {:.3g} s)", where, st.h_unstable));
       measured += fmt::format("{}{}: no stable step", i ? "; " : "", integrator_name(k));

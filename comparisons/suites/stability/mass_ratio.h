@@ -9,7 +9,8 @@ namespace tecido::suites::stability {
 
 /// stability/extremes/mass_ratio_min and _max: h_max omega_max / limit, over systems and integrators.
 std::vector<CheckSpec> mass_ratio_checks(const Settings& s);
-/// One row per system; data["mass_ratio"][system][integrator] = {found, omega_max, and when found
+/// One row per system; data["mass_ratio"][system][integrator] = {found, omega_max, reference (the
+/// equal-mass pair), and when found
 /// h_max, ratio (h_max omega_max / limit), smaller_than_equal (the equal-mass pair's h_max / h_max)}.
 ExtremeResult run_mass_ratio(const Settings& s);
 
