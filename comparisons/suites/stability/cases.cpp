@@ -12,16 +12,6 @@
 
 namespace tecido::suites::stability {
 
-const char* case_group_name(CaseGroup g) {
-  switch (g) {
-    case CaseGroup::Extremes: return "extremes";
-    case CaseGroup::Grid: return "grid";
-    case CaseGroup::Horizon: return "horizon";
-    case CaseGroup::Growth: return "growth";
-  }
-  return "?";
-}
-
 std::size_t Layout::size(CaseGroup g) const {
   switch (g) {
     case CaseGroup::Extremes: return extremes;

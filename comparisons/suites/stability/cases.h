@@ -21,7 +21,6 @@ namespace tecido::suites::stability {
 
 enum class CaseGroup { Extremes, Grid, Horizon, Growth };
 constexpr CaseGroup kCaseOrder[] = {CaseGroup::Horizon, CaseGroup::Extremes, CaseGroup::Grid, CaseGroup::Growth};
-const char* case_group_name(CaseGroup g);
 
 /// The number of cases of each group.
 struct Layout {
