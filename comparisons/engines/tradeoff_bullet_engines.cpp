@@ -5,6 +5,7 @@
 
 #include "reference/bullet_deformable.h"
 #include "reference/bullet_softbody.h"
+#include "reference/klst_calibration.h"
 
 #include <algorithm>
 #include <cmath>
@@ -152,7 +153,7 @@ TradeoffEngine bullet_deformable_tradeoff_engine() {
   e.max_steps = kMaxSteps;
   e.run = [](const Scene& scene, double h, double seconds) -> std::optional<std::vector<Vec3>> {
     if (!covered(scene, h, kMaxSide)) return std::nullopt;
-    return reference::run_deformable_twin(scene, h, seconds);
+    return reference::run_deformable_twin(scene, h, seconds).x;
   };
   return e;
 }
@@ -169,7 +170,7 @@ TradeoffEngine bullet_deformable_implicit_tradeoff_engine(int cg_iterations) {
     reference::DeformableTwinOptions o;
     o.implicit = true;
     o.krylov_iterations = cg_iterations;
-    return reference::run_deformable_twin(scene, h, seconds, o);
+    return reference::run_deformable_twin(scene, h, seconds, o).x;
   };
   return e;
 }
@@ -193,7 +194,7 @@ TradeoffEngine bullet_classic_tradeoff_engine(int piterations) {
     o.klst = klst;
     o.piterations = piterations;
     o.kdp = 0.0;  // the scene is undamped
-    return reference::run_classic_soft_body(scene, h, seconds, o);
+    return reference::run_classic_soft_body(scene, h, seconds, o).x;
   };
   return e;
 }

@@ -13,6 +13,7 @@
 #ifdef TECIDO_HAVE_REFERENCE
 #include "reference/bullet_deformable.h"
 #include "reference/bullet_softbody.h"
+#include "reference/klst_calibration.h"
 #endif
 
 namespace tecido::suites {
