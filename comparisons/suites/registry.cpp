@@ -1,5 +1,5 @@
 #include "comparisons/suites/bench_suite.h"
-#include "comparisons/suites/drift_suite.h"
+#include "comparisons/suites/drift/drift_suite.h"
 #include "comparisons/suites/order/order_suite.h"
 #include "comparisons/suites/plane_suite.h"
 #include "comparisons/suites/selfcollision_suite.h"
@@ -14,7 +14,7 @@ namespace tecido::suites {
 const std::vector<SuiteEntry>& suite_registry() {
   static const std::vector<SuiteEntry> suites = {
       {"order", "observed error order of each dynamics engine on analytic problems, against the order it claims", &run_order_suite, &order_sweep},
-      {"drift", "energy and momentum over long runs; core vs Bullet on identical cloth", &run_drift_suite},
+      {"drift", "energy, momentum and angular momentum over long runs; core vs Bullet on identical cloth", &run_drift_suite, &drift_sweep},
       {"plane", "segment vs bounded plane agreement with the exact referee; bisected contact time", &run_plane_suite},
       {"tritri", "triangle-triangle engines vs the exact referee by category, ns per pair", &run_tritri_suite, &tritri_sweep},
       {"selfcollision", "self-collision pair sets per engine vs exact on recorded frames: precision, recall, time", &run_selfcollision_suite},
