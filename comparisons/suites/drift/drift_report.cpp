@@ -213,18 +213,18 @@ std::string classic_markdown(const Settings& s, const io::Json& result) {
   if (const std::string* err = case_error(result)) return md + "Not measured: " + *err + ".\n\n";
   const io::Json &c = result.at("calibration"), &l = result.at("load");
   md += fmt::format(
-      "Calibration: **kLST = {:.4g}** (sag core {:.4g} mm, Bullet {:.4g} mm after {} settles, the calibrator's own "
-      "stopping rule met at a relative error of {:.2e}, which says only that the search converged; Bullet's default "
-      "kLST = 1 sags {:.3g} mm; settled shapes {:.3g} mm RMS apart). ",
+      "Calibration: **kLST = {:.4g}** (sag core {:.4g} mm, Bullet {:.4g} mm after {} settles: a relative sag error of "
+      "{:.2e}, where the calibrator stops at {:g}; that is its own stopping rule, which says the search converged, not "
+      "that the engines agree; Bullet's default kLST = 1 sags {:.3g} mm; settled shapes {:.3g} mm RMS apart). ",
       get_num(c.at("klst")), 1e3 * get_num(c.at("core_sag")), 1e3 * get_num(c.at("bullet_sag")),
-      c.at("evaluations").get<int>(), get_num(c.at("relative_error")), 1e3 * get_num(c.at("sag_at_klst_1")),
-      1e3 * get_num(c.at("shape_rms")));
+      c.at("evaluations").get<int>(), get_num(c.at("relative_error")), s.classic_calibration_tolerance,
+      1e3 * get_num(c.at("sag_at_klst_1")), 1e3 * get_num(c.at("shape_rms")));
   const double ratio = get_num(l.at("sag_ratio")), expected = classic_sag_ratio(s.classic_load_factor);
   const bool follows = std::abs(ratio - 1.0) < std::abs(ratio - expected);
   md += fmt::format(
       "At {:g} times the load: sag core {:.4g} mm, Bullet {:.4g} mm, Bullet/core = {:.3f} (1 if the classic body "
       "followed a Hooke cloth; {:.3f} if its links do not feel the load); Bullet's settled shape moved by at most "
-      "{:.2g} m from the calibration load's, and the two settled shapes are {:.3g} mm RMS apart. ",
+      "{:.2g} m from the calibration load's (0: bit-identical), and core's and Bullet's settled shapes are {:.3g} mm RMS apart. ",
       get_num(l.at("factor")), 1e3 * get_num(l.at("core_sag")), 1e3 * get_num(l.at("bullet_sag")), ratio, expected,
       get_num(l.at("bullet_shape_change")), 1e3 * get_num(l.at("shape_rms")));
   md += follows ? "**Finding**: the ratio is nearer 1 than the load-independent value: at this load the classic body "
