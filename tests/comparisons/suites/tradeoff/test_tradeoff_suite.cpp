@@ -105,8 +105,12 @@ TEST(TradeoffFindings, ClassicParagraphIsDerivedFromTheTable) {
 
 // The whole suite through the CLI with a tolerance file whose every tradeoff number is changed:
 // the same checks (the per-front-point ones excepted: the front follows the timings), the same
-// work (every run's engine, step, status and error identical), and exit 1.
+// work (every run's engine, step, status and error identical), and exit 1. Two quick runs of the
+// suite: skipped under AddressSanitizer, where each takes minutes (as SuiteShard.TradeoffMerge...).
 TEST(TradeoffSuiteCli, EveryBandChangedGivesTheSameChecksTheSameWorkAndExitOne) {
+#if defined(__SANITIZE_ADDRESS__)
+  GTEST_SKIP() << "too slow under AddressSanitizer";
+#endif
   const auto dir = testing::temp_dir("tradeoff-perturbed");
   io::Json doc = io::Json::parse(testing::slurp(std::string(TECIDO_SOURCE_DIR) + "/data/tolerances.json"));
   int changed_numbers = 0;
