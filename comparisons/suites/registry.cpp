@@ -5,7 +5,7 @@
 #include "comparisons/suites/selfcollision_suite.h"
 #include "comparisons/suites/stability/stability_suite.h"
 #include "comparisons/suites/tradeoff/tradeoff_suite.h"
-#include "comparisons/suites/tritri_suite.h"
+#include "comparisons/suites/tritri/tritri_suite.h"
 #include "comparisons/suites/suite.h"
 #include "comparisons/suites/sweep.h"
 
