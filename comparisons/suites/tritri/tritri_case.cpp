@@ -1,22 +1,12 @@
 #include "comparisons/suites/tritri/tritri_case.h"
 
 #include "comparisons/suites/sweep.h"
+#include "comparisons/suites/thread_cpu_time.h"
 #include "comparisons/suites/tritri/agreement.h"
 
-#include <ctime>
 #include <stdexcept>
 
 namespace tecido::suites::tritri {
-
-namespace {
-/// CPU time of the calling thread [s]: unlike wall time, it does not count the time other
-/// processes on a shared machine take from this thread.
-double thread_seconds() {
-  timespec t{};
-  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
-  return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
-}
-}  // namespace
 
 io::Json run_tritri_case(std::uint64_t seed, const std::vector<Family>& families, const CaseRange& range,
                          const TriTriEngine& referee, const std::vector<TriTriEngine>& engines,
@@ -36,9 +26,9 @@ io::Json run_tritri_case(std::uint64_t seed, const std::vector<Family>& families
   io::Json out_engines = io::Json::array();
   for (const TriTriEngine& eng : engines) {
     std::vector<std::optional<bool>> got(pairs.size());
-    const double t0 = thread_seconds();
+    const double t0 = thread_cpu_seconds();
     for (std::size_t i = 0; i < pairs.size(); ++i) got[i] = eng.test(pairs[i].a, pairs[i].b);
-    const double seconds = thread_seconds() - t0;
+    const double seconds = thread_cpu_seconds() - t0;
     std::vector<long> disagree;
     const Tally t = count_agreement(truth, got, &disagree, range.first, max_disagreements);
     out_engines.push_back({{"name", eng.name},
