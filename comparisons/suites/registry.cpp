@@ -1,4 +1,4 @@
-#include "comparisons/suites/bench_suite.h"
+#include "comparisons/suites/bench/bench_suite.h"
 #include "comparisons/suites/drift/drift_suite.h"
 #include "comparisons/suites/order/order_suite.h"
 #include "comparisons/suites/plane_suite.h"
