@@ -72,7 +72,7 @@ std::vector<BadScene> bad_scenes() {
       // 16.7 M nodes would need ~4 GB and fail in the allocator minutes later (found by fuzz_scene).
       {"huge_cloth", R"({"dt":0.01,"steps":0,"cloth":{"rows":4096,"cols":4096,"spacing":0.001,"origin":[0,0,0],)"
                      R"("axis_u":[1,0,0],"axis_v":[0,1,0],"total_mass":1,"stiffness_b":1}})",
-       "/cloth/cols", "exceeds the limit"},
+       "/cloth/cols", "more than the limit of 1048576"},
   };
 }
 
