@@ -6,17 +6,19 @@
 // `all --shard` shards the sweep suites and skips the others (saying so on stderr); naming a suite
 // that cannot be sharded is a usage error.
 #include "comparisons/cli/commands.h"
+#include "comparisons/cli/option_checks.h"
 #include "comparisons/cli/shard_option.h"
 #include "comparisons/io/atomic_file.h"
 #include "comparisons/io/gnuplot.h"
 #include "comparisons/io/input_error.h"
+#include "comparisons/io/limits.h"
+#include "comparisons/io/output_dir.h"
 #include "comparisons/suites/report.h"
 #include "comparisons/suites/suite_shard.h"
 #include "comparisons/suites/sweep.h"
 
 #include <algorithm>
 #include <chrono>
-#include <filesystem>
 #include <iostream>
 #include <memory>
 #include <thread>
@@ -43,15 +45,19 @@ Command add_suite(CLI::App& app) {
   for (const auto& s : suites::suite_registry()) list += "\n  " + s.name + ": " + s.summary;
   CLI::App* sub = app.add_subcommand("suite", "Run comparison suites and write report.json and report.md. Suites:" + list);
   sub->add_option("names", o->names, "Suite names, or all")->required();
-  sub->add_option("--out", o->out, "Output directory")->capture_default_str();
+  sub->add_option("--out", o->out, "Output directory")->capture_default_str()->check(non_empty());
   sub->add_flag("--quick", o->quick, "Smaller counts, same checks (under 2 minutes for all)");
-  sub->add_option("--seed", o->seed, "Seed of every random input (written into the report)")->capture_default_str();
-  sub->add_option("--threads", o->threads, "Worker threads (0 = all cores); results do not depend on it");
-  sub->add_option("--tolerances", o->tolerances, "Tolerance file (default data/tolerances.json)");
-  sub->add_option("--data", o->data, "Data directory (default: the source tree's data/)");
+  sub->add_option("--seed", o->seed, "Seed of every random input (written into the report)")
+      ->capture_default_str()
+      ->check(unsigned_integer());
+  sub->add_option("--threads", o->threads, "Worker threads (0 = all cores); results do not depend on it")
+      ->check(integer_in(0, io::kMaxThreads));
+  sub->add_option("--tolerances", o->tolerances, "Tolerance file (default data/tolerances.json)")->check(non_empty());
+  sub->add_option("--data", o->data, "Data directory (default: the source tree's data/)")->check(non_empty());
   sub->add_option("--shard", o->shard,
                   "Only the cases whose index % n == i of the sweep suites (tritri, stability, tradeoff), e.g. 0/8: "
-                  "writes DIR/shard.json; join the shards with `tecido merge`");
+                  "writes DIR/shard.json; join the shards with `tecido merge`")
+      ->check(shard_spec());
   return [o]() {
     const bool sharded = !o->shard.empty();
     int shard_index = 0, shard_count = 1;
@@ -95,6 +101,7 @@ Command add_suite(CLI::App& app) {
     ctx.tolerances = &tol;
     ctx.gnuplot = io::gnuplot_available();
     ctx.progress = true;
+    io::check_output_dir(ctx.out_dir);
     if (sharded) {
       if (!skipped.empty())
         std::cerr << "suite: --shard: skipping " << skipped << " (not split into cases; run them unsharded)\n";
@@ -119,7 +126,7 @@ Command add_suite(CLI::App& app) {
       std::cout << "suite shard " << o->shard << ": " << summary << "; wrote " << ctx.out_dir << "/shard.json\n";
       return 0;
     }
-    std::filesystem::create_directories(ctx.out_dir);
+    io::create_output_directories(ctx.out_dir);
     std::vector<suites::SuiteResult> results;
     for (const auto* s : chosen) {
       std::cerr << "suite " << s->name << " ..." << std::flush;

@@ -2,6 +2,7 @@
 
 #include "comparisons/io/atomic_file.h"
 
+#include <cerrno>
 #include <cstdio>
 #include <cstdlib>
 #include <fcntl.h>

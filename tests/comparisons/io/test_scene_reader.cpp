@@ -140,7 +140,8 @@ TEST(SceneReader, UnknownEngineAndIntegratorAreUsageErrors) {
   testing::write_text(dir / "s.json", kGood);
   auto r = run_cli("run '" + (dir / "s.json").string() + "' --integrator verlet");
   EXPECT_EQ(r.code, 2);
-  EXPECT_NE(r.err.find("unknown integrator"), std::string::npos);
+  EXPECT_NE(r.err.find("--integrator: must be one of euler, symplectic, midpoint, rk4 (got \"verlet\")"), std::string::npos)
+      << r.err;
   testing::write_text(dir / "cases.json", R"({"cases":[]})");
   r = run_cli("plane --cases '" + (dir / "cases.json").string() + "' --engines core,bogus --json");
   EXPECT_EQ(r.code, 2);
