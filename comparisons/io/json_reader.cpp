@@ -36,15 +36,15 @@ std::string escape(const std::string& key) {
   return out;
 }
 
-/// Thrown from the parser callback; turned into an InputError once the parser has unwound.
+/// Thrown from the SAX handler; turned into an InputError once the parser has unwound.
 struct Rejected {
   std::string where;
   std::string problem;
 };
 
-/// What the parser callback keeps per open array or object: O(1) besides the object's keys, so
-/// that tracking costs time and memory linear in the text (the JSON pointer of a level is built
-/// only when an error is reported).
+/// What the handler keeps per open array or object: O(1) besides the object's keys, so that
+/// tracking costs time and memory linear in the text (the JSON pointer of a level is built only
+/// when an error is reported).
 struct Level {
   bool is_object = false;
   std::size_t index = 0;        ///< arrays: the index of the next element
@@ -52,7 +52,7 @@ struct Level {
   std::string last_key;         ///< objects: the key of the value being parsed
 };
 
-/// The JSON pointer of the value being parsed: the path through every open level.
+/// The JSON pointer of the value being parsed: the path through the first `levels` open levels.
 std::string pointer_of(const std::vector<Level>& stack, std::size_t levels) {
   std::string where;
   for (std::size_t k = 0; k < levels; ++k)
@@ -60,45 +60,58 @@ std::string pointer_of(const std::vector<Level>& stack, std::size_t levels) {
   return where;
 }
 
-/// nlohmann::json's parser callback: rejects nesting past kMaxJsonDepth at its first level and
-/// duplicate keys (which nlohmann::json would resolve silently to the last value).
-class StrictCallback {
+/// nlohmann::json's SAX events, checked, then handed to its own document builder: nesting past
+/// kMaxJsonDepth is rejected at its first level and duplicate keys at the second (nlohmann::json
+/// would keep the last value silently). Not the parser callback: in this nlohmann::json (3.11)
+/// it scans the enclosing container at every object's end, quadratic in an array of objects.
+class StrictSax {
  public:
-  bool operator()(int depth, Json::parse_event_t ev, Json& parsed) {
-    switch (ev) {
-      case Json::parse_event_t::object_start:
-      case Json::parse_event_t::array_start:
-        if (depth >= kMaxJsonDepth)
-          throw Rejected{pointer(), "nesting deeper than " + std::to_string(kMaxJsonDepth) + " levels (the limit)"};
-        stack_.push_back(Level{ev == Json::parse_event_t::object_start, 0, {}, {}});
-        break;
-      case Json::parse_event_t::key: {
-        Level& level = stack_.back();
-        std::string key = parsed.get<std::string>();
-        if (!level.keys.insert(key).second)
-          throw Rejected{pointer_of(stack_, stack_.size() - 1), "duplicate key \"" + key + "\""};
-        level.last_key = std::move(key);
-        break;
-      }
-      case Json::parse_event_t::object_end:
-      case Json::parse_event_t::array_end:
-        stack_.pop_back();
-        next_element();
-        break;
-      case Json::parse_event_t::value:
-        next_element();
-        break;
-    }
-    return true;
+  using Builder = nlohmann::detail::json_sax_dom_parser<Json>;
+  explicit StrictSax(Json& result) : dom_(result, /*allow_exceptions=*/true) {}
+
+  bool null() { return scalar(dom_.null()); }
+  bool boolean(bool b) { return scalar(dom_.boolean(b)); }
+  bool number_integer(Json::number_integer_t x) { return scalar(dom_.number_integer(x)); }
+  bool number_unsigned(Json::number_unsigned_t x) { return scalar(dom_.number_unsigned(x)); }
+  bool number_float(Json::number_float_t x, const Json::string_t& text) { return scalar(dom_.number_float(x, text)); }
+  bool string(Json::string_t& s) { return scalar(dom_.string(s)); }
+  bool binary(Json::binary_t& b) { return scalar(dom_.binary(b)); }
+  bool start_object(std::size_t n) { return open(true) && dom_.start_object(n); }
+  bool start_array(std::size_t n) { return open(false) && dom_.start_array(n); }
+  bool end_object() { return close() && dom_.end_object(); }
+  bool end_array() { return close() && dom_.end_array(); }
+  bool key(Json::string_t& k) {
+    Level& level = stack_.back();
+    if (!level.keys.insert(k).second) throw Rejected{pointer_of(stack_, stack_.size() - 1), "duplicate key \"" + k + "\""};
+    level.last_key = k;
+    return dom_.key(k);
+  }
+  template <class Exception>
+  bool parse_error(std::size_t pos, const std::string& token, const Exception& e) {
+    return dom_.parse_error(pos, token, e);  // throws e
   }
 
   /// The pointer of the value being parsed (for the parser's own errors too).
   std::string pointer() const { return pointer_of(stack_, stack_.size()); }
 
  private:
-  void next_element() {
-    if (!stack_.empty() && !stack_.back().is_object) ++stack_.back().index;
+  bool open(bool is_object) {
+    if (stack_.size() >= static_cast<std::size_t>(kMaxJsonDepth))
+      throw Rejected{pointer(), "nesting deeper than " + std::to_string(kMaxJsonDepth) + " levels (the limit)"};
+    stack_.push_back(Level{is_object, 0, {}, {}});
+    return true;
   }
+  bool close() {
+    stack_.pop_back();
+    return scalar(true);
+  }
+  /// A complete value: the enclosing array moves on to its next index.
+  bool scalar(bool ok) {
+    if (!stack_.empty() && !stack_.back().is_object) ++stack_.back().index;
+    return ok;
+  }
+
+  Builder dom_;
   std::vector<Level> stack_;
 };
 
@@ -115,11 +128,11 @@ std::string child(const std::string& where, std::size_t index) { return where + 
 
 Json parse_json_text(const std::string& text, const std::string& file) {
   if (text.find_first_not_of(" \t\r\n") == std::string::npos) throw InputError(file, "", "empty file, expected JSON");
-  StrictCallback strict;
-  // nlohmann copies the callback: parse with a reference to `strict` so its state stays here.
-  auto cb = [&strict](int depth, Json::parse_event_t ev, Json& parsed) { return strict(depth, ev, parsed); };
+  Json result;
+  StrictSax strict(result);
   try {
-    return Json::parse(text, cb, /*allow_exceptions=*/true, /*ignore_comments=*/false);
+    Json::sax_parse(text, &strict, Json::input_format_t::json, /*strict=*/true, /*ignore_comments=*/false);
+    return result;
   } catch (const Rejected& r) {
     throw InputError(file, r.where, r.problem);
   } catch (const Json::parse_error& e) {
