@@ -40,11 +40,10 @@ std::vector<int> parse_runs(const std::string& list, int count) {
     const auto dash = item.find('-', 1);
     const std::string a = item.substr(0, dash), b = dash == std::string::npos ? a : item.substr(dash + 1);
     const auto index = [&](const std::string& t) {
-      if (t.empty() || t.size() > 9 || t.find_first_not_of("0123456789") != std::string::npos)
+      if (t.empty() || t.find_first_not_of("0123456789") != std::string::npos)
         throw io::UsageError("--runs: \"" + item + "\" is not an index or a range a-b" + range);
-      const int i = std::stoi(t);
-      if (i >= count) throw io::UsageError("--runs: \"" + item + "\" is outside the runs" + range);
-      return i;
+      if (t.size() > 9 || std::stoi(t) >= count) throw io::UsageError("--runs: \"" + item + "\" is outside the runs" + range);
+      return std::stoi(t);
     };
     const int lo = index(a), hi = index(b);
     if (hi < lo) throw io::UsageError("--runs: \"" + item + "\" is an empty range");

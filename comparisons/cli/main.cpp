@@ -79,6 +79,15 @@ int main(int argc, char** argv) {
   auto registry = tecido::cli::command_registry();
   std::sort(registry.begin(), registry.end());
   for (const auto& entry : registry) add(entry.second);
+  const auto named = [&](const std::string& word) {
+    return std::any_of(registry.begin(), registry.end(), [&](const auto& entry) { return entry.first == word; });
+  };
+  if (argc > 1 && argv[1][0] != '-' && !named(argv[1])) {
+    std::string known;
+    for (const auto& entry : registry) known += (known.empty() ? "" : ", ") + entry.first;
+    tecido::cli::report_error(std::cerr, "unknown command \"" + std::string(argv[1]) + "\" (known: " + known + "; see --help)");
+    return 2;
+  }
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
