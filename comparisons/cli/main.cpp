@@ -1,7 +1,7 @@
 // tecido: the command line. Exit codes: 0 ok, 1 a tolerance check failed, 2 bad usage, bad input
 // or an output that cannot be written (one line on stderr naming the option, the file and JSON
 // pointer, or the path, and the problem), 3 an internal error.
-#include "comparisons/cli/commands.h"
+#include "comparisons/cli/app.h"
 #include "comparisons/cli/error_line.h"
 #include "comparisons/io/input_error.h"
 #include "comparisons/io/output_error.h"
@@ -16,11 +16,6 @@
 #include <new>
 
 namespace tecido::cli {
-std::vector<std::pair<std::string, CommandFactory>>& command_registry() {
-  static std::vector<std::pair<std::string, CommandFactory>> registry;
-  return registry;
-}
-
 namespace {
 
 /// Runs the parsed subcommand, turning every error into its one line and exit code.
@@ -67,33 +62,20 @@ int check_stdout(int code) {
 int main(int argc, char** argv) {
   // A file-size limit (ulimit -f) then shows as a failed write, reported like a full disk.
   std::signal(SIGXFSZ, SIG_IGN);
-  CLI::App app{"tecido: a validation harness for cloth and particle physics"};
-  app.require_subcommand(1);
-  app.set_help_all_flag("--help-all", "Show help for every subcommand");
-  std::map<CLI::App*, tecido::cli::Command> commands;
-  auto add = [&](tecido::cli::Command (*f)(CLI::App&)) {
-    const std::size_t before = app.get_subcommands({}).size();
-    tecido::cli::Command c = f(app);
-    commands[app.get_subcommands({})[before]] = std::move(c);
-  };
-  auto registry = tecido::cli::command_registry();
-  std::sort(registry.begin(), registry.end());
-  for (const auto& entry : registry) add(entry.second);
-  const auto named = [&](const std::string& word) {
-    return std::any_of(registry.begin(), registry.end(), [&](const auto& entry) { return entry.first == word; });
-  };
-  if (argc > 1 && argv[1][0] != '-' && !named(argv[1])) {
+  const auto names = tecido::cli::command_names();
+  if (argc > 1 && argv[1][0] != '-' && std::find(names.begin(), names.end(), argv[1]) == names.end()) {
     std::string known;
-    for (const auto& entry : registry) known += (known.empty() ? "" : ", ") + entry.first;
+    for (const auto& n : names) known += (known.empty() ? "" : ", ") + n;
     tecido::cli::report_error(std::cerr, "unknown command \"" + std::string(argv[1]) + "\" (known: " + known + "; see --help)");
     return 2;
   }
+  const auto cl = tecido::cli::make_command_line();
   try {
-    app.parse(argc, argv);
+    cl->app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
-    return tecido::cli::check_stdout(app.exit(e));
+    return tecido::cli::check_stdout(cl->app.exit(e));
   } catch (const CLI::CallForAllHelp& e) {
-    return tecido::cli::check_stdout(app.exit(e));
+    return tecido::cli::check_stdout(cl->app.exit(e));
   } catch (const CLI::ValidationError& e) {
     tecido::cli::report_error(std::cerr, e.what());  // already "--option: problem"
     return 2;
@@ -101,5 +83,5 @@ int main(int argc, char** argv) {
     tecido::cli::report_error(std::cerr, std::string(e.what()) + " (see --help)");
     return 2;
   }
-  return tecido::cli::check_stdout(tecido::cli::run_parsed(commands));
+  return tecido::cli::check_stdout(tecido::cli::run_parsed(cl->commands));
 }
