@@ -11,8 +11,9 @@ namespace tecido::io {
 
 // ---- Every input file -------------------------------------------------------------------
 /// Largest input file [bytes] (JSON or OBJ); a longer file or stream (/dev/zero, a pipe) is
-/// rejected after reading one byte more, never read whole. The parsed JSON document takes at
-/// most about 25 times its text (nlohmann::json's nodes), so this bounds a reader's memory.
+/// rejected after reading one byte more, never read whole. A parsed JSON document takes about 4
+/// times its text for real files and at most about 33 times for the densest ([{},{},...]:
+/// nlohmann::json's nodes), so this bounds a reader's memory.
 constexpr std::size_t kMaxInputBytes = std::size_t{64} << 20;
 /// Deepest JSON nesting (arrays and objects) of any JSON input: rejected while parsing, at the
 /// first level past it. Real files nest at most about 8 levels.
@@ -39,12 +40,12 @@ constexpr std::size_t kMaxTriangles = std::size_t{1} << 21;
 constexpr std::size_t kMaxPlanes = 1024;
 /// Obstacles of a scene (spheres, boxes, meshes; every particle against every one, every step).
 constexpr std::size_t kMaxObstacles = 1024;
-/// Work of one run: steps x elements per step (particles + springs + particles x (planes +
-/// obstacles) + self-collision triangles), in element-steps; about 10 minutes of one core.
-/// `tecido run --max-work N` raises it up to kMaxWorkCeiling.
+/// Work of one run: steps x elements per step (io/work_limit.h: a step's overhead, particles,
+/// springs, particles x (planes + obstacles), self-collision triangles by their cost), in
+/// element-steps; a few minutes of one core. `--max-work N` raises it up to kMaxWorkCeiling.
 constexpr double kDefaultMaxWork = 1e11;
 constexpr double kMaxWorkCeiling = 1e16;
-/// Frame files of one `tecido run --out` (each of OBJ and VTK counts once per frame).
+/// Frames of one `tecido run --out` (one OBJ file each, and one VTK file with --vtk).
 constexpr long long kMaxFrames = 100000;
 
 // ---- Query files (tecido tritri, plane, ccd) and meshes (selfcollide, obstacles) ---------
