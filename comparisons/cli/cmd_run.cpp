@@ -54,14 +54,20 @@ Scene prepared_scene(const RunOptions& o) {
   return scene;
 }
 
-/// Every K-th step of the run (K from --frame-every, or about 100 frames in all).
-long long frame_interval(const RunOptions& o, long long steps) {
+/// Every K-th step of the run (K from --frame-every, or about 100 frames in all), once the
+/// frames and what they hold fit their limits.
+long long frame_interval(const RunOptions& o, const Scene& scene) {
+  const long long steps = scene.steps;
   if (o.every_opt->count() == 0) return std::max(1LL, (steps + 99) / 100);
   const long long frames = steps / o.frame_every + 2;
+  const std::string gives = "--frame-every: " + std::to_string(o.frame_every) + " gives " + std::to_string(frames) +
+                            " frames of " + std::to_string(steps) + " steps";
   if (frames > io::kMaxFrames)
-    throw io::UsageError("--frame-every: " + std::to_string(o.frame_every) + " gives " + std::to_string(frames) +
-                         " frames of " + std::to_string(steps) + " steps, more than the limit of " +
-                         std::to_string(io::kMaxFrames) + " (choose a larger K)");
+    throw io::UsageError(gives + ", more than the limit of " + std::to_string(io::kMaxFrames) + " (choose a larger K)");
+  const double elements = static_cast<double>(scene.particles.size() + scene.triangles.size());
+  if (static_cast<double>(frames) * elements > io::kMaxFrameElements)
+    throw io::UsageError(gives + " of " + std::to_string(static_cast<long long>(elements)) +
+                         " particles and triangles, more than the limit of 1e9 in all (choose a larger K)");
   return o.frame_every;
 }
 
@@ -128,7 +134,7 @@ void print_summary(const Simulation& sim, const Scene& scene, const io::Json& re
 
 int run(const RunOptions& o) {
   const Scene scene = prepared_scene(o);
-  const long long every = o.out.empty() ? 1 : frame_interval(o, scene.steps);
+  const long long every = o.out.empty() ? 1 : frame_interval(o, scene);
   if (!o.out.empty()) io::check_output_dir(o.out + "/frames");
   Simulation sim(scene);
   const auto self_collision = install_self_collision(sim);

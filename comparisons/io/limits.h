@@ -45,8 +45,11 @@ constexpr std::size_t kMaxObstacles = 1024;
 /// element-steps; a few minutes of one core. `--max-work N` raises it up to kMaxWorkCeiling.
 constexpr double kDefaultMaxWork = 1e11;
 constexpr double kMaxWorkCeiling = 1e16;
-/// Frames of one `tecido run --out` (one OBJ file each, and one VTK file with --vtk).
+/// Frames of one `tecido run --out` (one OBJ file each, and one VTK file with --vtk), and what
+/// they hold in all: frames x (particles + triangles), about 40 bytes each (40 GB at the limit;
+/// the default of about 100 frames of the largest scene is a third of it).
 constexpr long long kMaxFrames = 100000;
+constexpr double kMaxFrameElements = 1e9;
 
 // ---- Query files (tecido tritri, plane, ccd) and meshes (selfcollide, obstacles) ---------
 constexpr std::size_t kMaxPairs = std::size_t{1} << 20;       ///< entries of a pairs file

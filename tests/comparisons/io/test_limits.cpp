@@ -104,6 +104,12 @@ TEST_F(Limits, StepsAreBoundedByTheWorkLimit) {
 TEST_F(Limits, Frames) {
   const std::string s = file("f.json", R"({"dt":0.01,"steps":200000,"particles":[)" + kParticle + "]}");
   expect_run_rejected(s, "--frame-every 1", {"--frame-every: 1 gives 200002 frames of 200000 steps, more than the limit of 100000"});
+  // What the frames hold: 50001 frames of 20001 particles and triangles (a 100 x 100 cloth + 1).
+  const std::string c = file("c.json", R"({"dt":0.001,"steps":100000,"particles":[)" + kParticle +
+                                           R"(],"cloth":{"rows":100,"cols":100,"spacing":0.01,"origin":[0,0,0],)"
+                                           R"("axis_u":[1,0,0],"axis_v":[0,1,0],"total_mass":1,"stiffness_b":1}})");
+  expect_run_rejected(c, "--frame-every 2", {"--frame-every: 2 gives 50002 frames of 100000 steps of 29603 particles and triangles, "
+                                              "more than the limit of 1e9 in all"});
 }
 
 TEST_F(Limits, PairsAndCases) {
