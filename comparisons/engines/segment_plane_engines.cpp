@@ -1,5 +1,7 @@
 #include "comparisons/engines/segment_plane_engines.h"
 
+#include "core/geometry/segment_plane_seed.h"
+
 #ifdef TECIDO_HAVE_REFERENCE
 #include "reference/exact_referee.h"
 #include "reference/fcl_adapter.h"
@@ -10,6 +12,8 @@ namespace tecido {
 const std::vector<SegmentPlaneEngine>& segment_plane_engines() {
   static const std::vector<SegmentPlaneEngine> engines = {
       {"core", [](const BoundedPlane& p, const Vec3& a, const Vec3& b) { return std::optional(segment_plane(p, a, b)); }},
+      {"core-seed",
+       [](const BoundedPlane& p, const Vec3& a, const Vec3& b) { return std::optional(segment_plane_seed(p, a, b)); }},
 #ifdef TECIDO_HAVE_REFERENCE
       {"fcl", &reference::fcl_segment_plane},
       {"exact",

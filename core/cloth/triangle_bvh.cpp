@@ -223,6 +223,27 @@ void TriangleBvh::refit(const std::vector<Vec3>& x) {
     }
     vlo_[v][3] = vhi_[v][3] = 0.0f;
   }
+  refit_from_vertex_bounds();
+}
+
+void TriangleBvh::refit(const std::vector<Vec3>& x0, const std::vector<Vec3>& x1) {
+  if (nodes_.empty()) return;
+  const std::size_t nv = x0.size();
+  vlo_.resize(nv);
+  vhi_.resize(nv);
+  for (std::size_t v = 0; v < nv; ++v) {
+    for (int d = 0; d < 3; ++d) {
+      // float_down / float_up are monotone: the bounds of the min / max are the min / max of
+      // the bounds, so this contains both frames' outward boxes.
+      vlo_[v][d] = float_down(std::min(x0[v][d], x1[v][d]));
+      vhi_[v][d] = float_up(std::max(x0[v][d], x1[v][d]));
+    }
+    vlo_[v][3] = vhi_[v][3] = 0.0f;
+  }
+  refit_from_vertex_bounds();
+}
+
+void TriangleBvh::refit_from_vertex_bounds() {
   // Children always have larger indices than their parent: one reverse sweep suffices.
   for (std::size_t k = nodes_.size(); k-- > 0;) {
     Node& nd = nodes_[k];

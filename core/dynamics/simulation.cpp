@@ -1,5 +1,6 @@
 #include "core/dynamics/simulation.h"
 
+#include "core/geometry/plane_side.h"
 #include "core/geometry/segment_plane.h"
 
 #include <algorithm>
@@ -23,13 +24,14 @@ Simulation::Simulation(const Scene& scene)
   side_.assign(n * n_planes_, 1);
   resting_flag_.assign(n * n_planes_, 0);
   if (n_planes_ == 0) return;
-  // Initial sides: the side the particle is on; on the plane, the side it comes from (against
-  // its velocity, else against its free acceleration, else the normal's side).
+  // Initial sides: the side the particle is on (exact sign, the one segment_plane decides
+  // crossings with); on the plane, the side it comes from (against its velocity, else against its
+  // free acceleration, else the normal's side).
   compute_accelerations(scene_.forces, springs_, p_.inv_mass, 0.0, p_.x, p_.v, a_free_);
   for (std::size_t i = 0; i < n; ++i) {
     for (std::size_t k = 0; k < n_planes_; ++k) {
       const BoundedPlane& pl = scene_.planes[k];
-      std::int8_t s = sign_of(pl.side(p_.x[i]));
+      std::int8_t s = static_cast<std::int8_t>(plane_side_sign(pl, p_.x[i]));
       if (s == 0) s = static_cast<std::int8_t>(-sign_of(pl.normal.dot(p_.v[i])));
       if (s == 0) s = static_cast<std::int8_t>(-sign_of(pl.normal.dot(a_free_[i])));
       if (s == 0) s = 1;
@@ -57,7 +59,9 @@ bool Simulation::any_hit(const std::vector<Vec3>& x0, const std::vector<Vec3>& x
       const std::size_t id = i * n_planes_ + k;
       if (resting_flag_[id]) continue;
       const BoundedPlane& pl = scene_.planes[k];
-      if (side_[id] * pl.side(x1[i]) > 0.0) continue;  // still strictly on its side
+      // Still strictly on its side (exactly: a rounded side could skip an end point exactly on
+      // the plane, or just past it, that segment_plane counts as a hit).
+      if (plane_side_sign(pl, x1[i]) == side_[id]) continue;
       if (segment_plane(pl, x0[i], x1[i]).hit) return true;
     }
   }
@@ -74,7 +78,7 @@ void Simulation::collect_hits(const std::vector<Vec3>& x0, const std::vector<Vec
       const std::size_t id = i * n_planes_ + k;
       if (resting_flag_[id]) continue;
       const BoundedPlane& pl = scene_.planes[k];
-      if (side_[id] * pl.side(x1[i]) > 0.0) continue;
+      if (plane_side_sign(pl, x1[i]) == side_[id]) continue;
       const SegmentPlaneHit h = segment_plane(pl, x0[i], x1[i]);
       if (h.hit && h.t < best.t) best = Hit{static_cast<int>(i), static_cast<int>(k), h.t};
     }
@@ -89,19 +93,24 @@ void Simulation::update_sides(const std::vector<Vec3>& x) {
     for (std::size_t k = 0; k < n_planes_; ++k) {
       const std::size_t id = i * n_planes_ + k;
       if (resting_flag_[id]) continue;
-      if (side_[id] * scene_.planes[k].side(x[i]) < 0.0) side_[id] = static_cast<std::int8_t>(-side_[id]);
+      if (plane_side_sign(scene_.planes[k], x[i]) == -side_[id]) side_[id] = static_cast<std::int8_t>(-side_[id]);
     }
   }
 }
 
 void Simulation::place_on_plane(int i, int k) {
-  // Project onto the plane, then make sure rounding leaves the particle on its own side.
+  // Project onto the plane, then make sure rounding leaves the particle on its own side or on
+  // the plane, exactly (the side the contact tests use). The rounded side can be 0 or of the
+  // right sign while the exact one is not, so each nudge is also at least about one ulp of the
+  // largest coordinate, doubling per try.
   const BoundedPlane& pl = scene_.planes[k];
-  const double s = side_[i * n_planes_ + k];
+  const int s = side_[i * n_planes_ + k];
   Vec3& x = p_.x[i];
   x -= pl.normal * pl.side(x);
-  for (int tries = 0; tries < 8 && s * pl.side(x) < 0.0; ++tries) {
-    x += pl.normal * (s * std::max(std::abs(pl.side(x)) * 2.0, 1e-300));
+  double floor = 0x1p-52 * x.cwiseAbs().maxCoeff();
+  for (int tries = 0; tries < 8 && plane_side_sign(pl, x) == -s; ++tries) {
+    x += pl.normal * (s * std::max({std::abs(pl.side(x)) * 2.0, floor, 1e-300}));
+    floor *= 2.0;
   }
 }
 
