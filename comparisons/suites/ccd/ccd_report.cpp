@@ -75,8 +75,8 @@ std::string join(const std::vector<std::string>& xs) {
 
 std::string method_markdown(const Settings& s, std::uint64_t seed) {
   std::string md = fmt::format(
-      "Continuous collision (vertex-face, edge-edge; linear motion over t in [0, 1]): {} queries per family (seed "
-      "{}), every engine against the exact referee (`reference/exact_ccd.h`: exact on the doubles). Every family but "
+      "Continuous collision (vertex-face, edge-edge; linear motion over t in [0, 1]): {} queries per constructed "
+      "family and {} per random family (seed {}), every engine against the exact referee (`reference/exact_ccd.h`: exact on the doubles). Every family but "
       "`random` is built on small dyadic rationals with its answer known by construction (contact and its time), "
       "moved off the axes by exact dyadic affine maps and relabelled; the referee must reproduce every constructed "
       "answer, and on the first {} queries of each family it must give the same answer without its floating-point "
@@ -85,7 +85,7 @@ std::string method_markdown(const Settings& s, std::uint64_t seed) {
       "rounds up to the nearest one). ns/query: wall time over the family's block, one thread of "
       "this run (cases share the machine; the benchmarks BM_CCD measure speed). Scale family: 2^e for e in {}, offsets "
       "2^k for k in {}; near misses by {} units of 2^-52.\n\nFamilies:\n\n",
-      s.per_family, seed, s.unfiltered_per_family, fmt::join(s.scale_exponents, ", "),
+      s.per_family, s.random_per_family, seed, s.unfiltered_per_family, fmt::join(s.scale_exponents, ", "),
       fmt::join(s.offset_exponents, ", "), fmt::join(s.near_miss_ulps, ", "));
   for (const Family& f : families()) md += fmt::format("- `{}`: {}\n", family_name(f), f.about);
   return md + "\n";

@@ -37,9 +37,10 @@ std::vector<KnownQuery> family_queries(std::size_t index, const Settings& s, std
   const Family& f = families().at(index);
   Rng r(substream(seed, 1000 + index));
   std::vector<KnownQuery> out;
-  out.reserve(s.per_family);
-  f.generate(r, s, s.per_family, out);
-  if (out.size() != s.per_family) throw std::logic_error("ccd family " + family_name(f) + " made a wrong count");
+  const std::size_t count = f.constructed ? s.per_family : s.random_per_family;
+  out.reserve(count);
+  f.generate(r, s, count, out);
+  if (out.size() != count) throw std::logic_error("ccd family " + family_name(f) + " made a wrong count");
   for (KnownQuery& kq : out) kq.q = relabelled(kq.q, r);
   return out;
 }

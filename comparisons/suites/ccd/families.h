@@ -35,8 +35,8 @@ std::string family_name(const Family& f);
 /// Every family, vertex-face first, in a fixed order.
 const std::vector<Family>& families();
 
-/// The family's queries for the suite's seed: `settings.per_family` of them from
-/// substream(seed, index), each relabelled at random.
+/// The family's queries for the suite's seed: `settings.per_family` of them (random families:
+/// `random_per_family`) from substream(seed, index), each relabelled at random.
 std::vector<KnownQuery> family_queries(std::size_t index, const Settings& s, std::uint64_t seed);
 
 // The generators (vertex_face_families.cpp, edge_edge_families.cpp).

@@ -16,7 +16,7 @@ namespace {
 
 Settings small(std::size_t n) {
   Settings s = settings(true);
-  s.per_family = n;
+  s.per_family = s.random_per_family = n;
   return s;
 }
 
