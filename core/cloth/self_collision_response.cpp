@@ -24,6 +24,7 @@ SelfCollisionResponder::SelfCollisionResponder(const std::vector<std::array<int,
 
 void SelfCollisionResponder::detect_continuous(Simulation& sim) {
   const Particles& p = sim.particles();
+  pairs_.clear();
   const auto finite = [](const std::vector<Vec3>& x) {
     return std::all_of(x.begin(), x.end(), [](const Vec3& v) { return v.allFinite(); });
   };

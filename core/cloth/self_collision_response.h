@@ -60,6 +60,8 @@ class SelfCollisionResponder {
   const SelfCollisionStats& stats() const { return stats_; }
   const SelfCollisionSettings& settings() const { return settings_; }
   const MeshTopology& topology() const { return topo_; }
+  /// The triangle pairs of the latest check: intersecting (discrete); the contacts' triangles
+  /// (continuous, with the pair-based responses; GIA's: those intersecting now); none otherwise.
   const std::vector<TrianglePair>& last_pairs() const { return pairs_; }
   const GiaResult& last_gia() const { return gia_; }
 

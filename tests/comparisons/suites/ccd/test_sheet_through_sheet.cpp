@@ -49,6 +49,35 @@ TEST(SheetThroughSheet, ContinuousDetectionWithoutResponseSeesWhatDiscreteMisses
   }
 }
 
+TEST(SheetThroughSheet, PairResponsesGetTheContactsTriangles) {
+  // Continuous detection feeds the edge modes every contact's triangles; GIA only those that
+  // intersect at the end of the step, and after a full pass-through none does.
+  const SheetScene sc = sheet_through_sheet_scene(small());
+  for (const auto response : {SelfCollisionResponse::Edge2, SelfCollisionResponse::Gia}) {
+    Scene scene = sc.scene;
+    scene.self_collision = SelfCollisionSettings{};
+    scene.self_collision->detection = SelfCollisionDetection::Continuous;
+    scene.self_collision->response = response;
+    scene.self_collision->strength = 0.1;
+    Simulation sim(scene);
+    const auto hook = install_self_collision(sim);
+    ASSERT_TRUE(sim.step());
+    EXPECT_EQ(hook->stats().contact_checks, 1);
+    if (response == SelfCollisionResponse::Edge2) {
+      EXPECT_GT(hook->last_pairs().size(), 0u);
+      for (const auto& p : hook->last_pairs()) {
+        EXPECT_LT(p[0], p[1]);
+        EXPECT_LT(p[0], static_cast<int>(scene.triangles.size()) / 2);  // one triangle of each sheet
+        EXPECT_GE(p[1], static_cast<int>(scene.triangles.size()) / 2);
+      }
+      EXPECT_GT(hook->stats().pushed_particles, 0);
+    } else {
+      EXPECT_EQ(hook->last_pairs().size(), 0u);
+      EXPECT_EQ(hook->stats().gia_regions, 0);
+    }
+  }
+}
+
 #ifdef TECIDO_HAVE_REFERENCE
 
 TEST(SheetThroughSheet, CoreMatchesTheRefereeAndTheImpulseKeepsTheSheetsApart) {
