@@ -6,6 +6,7 @@
 // as it is produced (no document of it is built).
 #include "comparisons/cli/commands.h"
 #include "comparisons/cli/option_checks.h"
+#include "comparisons/cli/selfcollide_continuous.h"
 #include "comparisons/engines/self_collision_engines.h"
 #include "comparisons/io/input_error.h"
 #include "comparisons/io/limits.h"
@@ -53,7 +54,7 @@ void print_engine(const std::string& name, const std::optional<std::vector<Trian
 
 Command add_selfcollide(CLI::App& app) {
   struct Opts {
-    std::string mesh, engines;
+    std::string mesh, to, engines;
     bool json = false;
   };
   auto o = std::make_shared<Opts>();
@@ -63,8 +64,13 @@ Command add_selfcollide(CLI::App& app) {
   CLI::App* sub = app.add_subcommand("selfcollide", "Intersecting triangle pairs of a mesh (self-collision) per engine");
   sub->add_option("--mesh", o->mesh, "Triangle mesh (Wavefront OBJ: v and f records)")->required()->check(non_empty());
   sub->add_option("--engines", o->engines, "Comma-separated engines (" + all + ")")->capture_default_str();
+  sub->add_option("--to", o->to,
+                  "Second frame of the same mesh (same faces): the vertex-face and edge-edge pairs touching while it "
+                  "moves linearly from --mesh to --to, {\"<engine>\":{\"vertex_face\":[[v,f]],\"edge_edge\":"
+                  "[[[a,b],[c,d]]]}}; engines core (exact answer), core-brute (core's test on every pair), exact");
   sub->add_flag("--json", o->json, "Print JSON (the only output format; kept for the contract)");
   return [o]() {
+    if (!o->to.empty()) return run_selfcollide_continuous(o->mesh, o->to, o->engines);
     std::vector<std::string> known;
     for (const auto& e : self_collision_engines()) known.push_back(e.name);
     const auto names = parse_engine_list(o->engines, known, "self-collision");

@@ -81,21 +81,33 @@ ClothGridSpec read_cloth(const JsonReader& r, const Json& j, const std::string& 
   return c;
 }
 
-/// "self_collision": {"response": "none"|"gia"|"edge1"|"edge2"|"edge3"|"gia+edge3",
-///                    "strength": force per pushed particle [N] (>= 0; required unless "none"),
+/// "self_collision": {"detection": "discrete" (default) | "continuous",
+///                    "response": "none"|"gia"|"edge1"|"edge2"|"edge3"|"gia+edge3"|"impulse",
+///                    "strength": force per pushed particle [N] (>= 0; required by gia and the edge modes),
 ///                    "every": detect after every k-th step (integer >= 1, default 1)}
-/// Needs a cloth (the triangle mesh it tests). See core/cloth/self_collision_settings.h.
+/// "impulse" needs "detection": "continuous". Needs a cloth (the triangle mesh it tests).
+/// See core/cloth/self_collision_settings.h.
 SelfCollisionSettings read_self_collision(const JsonReader& r, const Json& j, const std::string& w) {
   r.require_object(j, w);
-  r.only_keys(j, w, {"response", "strength", "every"});
+  r.only_keys(j, w, {"detection", "response", "strength", "every"});
   SelfCollisionSettings sc;
+  if (j.contains("detection")) {
+    const std::string d = r.string(j["detection"], child(w, "detection"));
+    const auto det = parse_self_collision_detection(d);
+    if (!det) r.fail(child(w, "detection"), "unknown detection \"" + d + "\" (discrete, continuous)");
+    sc.detection = *det;
+  }
   const std::string name = r.string(r.require(j, w, "response"), child(w, "response"));
   const auto resp = parse_self_collision_response(name);
-  if (!resp) r.fail(child(w, "response"), "unknown response \"" + name + "\" (none, gia, edge1, edge2, edge3, gia+edge3)");
+  if (!resp)
+    r.fail(child(w, "response"), "unknown response \"" + name + "\" (none, gia, edge1, edge2, edge3, gia+edge3, impulse)");
   sc.response = *resp;
+  if (sc.response == SelfCollisionResponse::Impulse && sc.detection != SelfCollisionDetection::Continuous)
+    r.fail(child(w, "response"), "\"impulse\" needs \"detection\": \"continuous\" (a time of impact)");
+  const bool forced = sc.response != SelfCollisionResponse::None && sc.response != SelfCollisionResponse::Impulse;
   if (j.contains("strength")) {
     sc.strength = r.number_in(j["strength"], child(w, "strength"), 0.0, 1e9);
-  } else if (sc.response != SelfCollisionResponse::None) {
+  } else if (forced) {
     r.fail(child(w, "strength"), "missing required key (the response needs a force)");
   }
   if (j.contains("every")) sc.every = static_cast<int>(r.integer(j["every"], child(w, "every"), 1, 1000000000));
