@@ -17,6 +17,7 @@
 ///
 /// Errors are io::InputError: the file and the JSON pointer (JSON) or "line N" (CSV).
 #include "comparisons/io/json_reader.h"
+#include "comparisons/io/limits.h"  // kMaxCcdQueries: queries in one file (JSON entries, CSV rows / 8)
 #include "core/geometry/ccd_query.h"
 #include "reference/exact_ccd.h"  // RationalCcdQuery: a plain struct (no GMP; usable without the reference build)
 
@@ -24,17 +25,6 @@
 #include <optional>
 #include <string>
 #include <vector>
-
-// kMaxCcdQueries, the largest number of queries in one file (JSON entries, CSV rows / 8), belongs
-// to the shared table of input limits (comparisons/io/limits.h); until that table is on this
-// branch, the same name and value are defined here.
-#if __has_include("comparisons/io/limits.h")
-#include "comparisons/io/limits.h"
-#else
-namespace tecido::io {
-constexpr std::size_t kMaxCcdQueries = std::size_t{1} << 20;
-}  // namespace tecido::io
-#endif
 
 namespace tecido::io {
 
