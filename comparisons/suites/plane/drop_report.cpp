@@ -106,11 +106,11 @@ std::string drop_conclusions(const DropSettings& s, const DropTable& t) {
   return md + node_words(s, t);
 }
 
-io::Json drop_data(const DropSettings& s, const DropTable& t) {
+io::Json drop_data(const DropTable& t) {
   io::Json rows = io::Json::array();
   for (std::size_t i = 0; i < t.rows.size(); ++i) {
     if (!t.error[i].empty()) {
-      rows.push_back({{"z0", s.heights.at(i)}, {"error", t.error[i]}});
+      rows.push_back({{"z0", t.rows[i].z0}, {"error", t.error[i]}});
       continue;
     }
     rows.push_back(drop_json(t.rows[i]));

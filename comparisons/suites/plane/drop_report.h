@@ -20,6 +20,6 @@ std::string drop_table(const DropTable& t, bool bullet);
 /// node's contact and whether it rebounds above its margin, with what the twin lists as not modelled.
 std::string drop_conclusions(const DropSettings& s, const DropTable& t);
 /// [{"z0", "t_exact", ...} or {"z0", "error"}] in height order.
-io::Json drop_data(const DropSettings& s, const DropTable& t);
+io::Json drop_data(const DropTable& t);
 
 }  // namespace tecido::suites::plane

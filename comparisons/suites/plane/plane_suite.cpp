@@ -197,7 +197,7 @@ std::string drop_section(CheckList& checks, const Plan& plan, const std::vector<
     t.error.push_back(err ? *err : "");
   }
   record_drop(checks, t);
-  data["drop"] = drop_data(s, t);
+  data["drop"] = drop_data(t);
   return drop_method(s, plan.bullet) + drop_table(t, plan.bullet) + drop_conclusions(s, t);
 }
 
