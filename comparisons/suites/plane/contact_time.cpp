@@ -63,7 +63,8 @@ ContactCellResult run_contact_cell(const ContactTimeSettings& s, std::uint64_t s
 ContactTable empty_contact_table(const ContactTimeSettings& s) {
   const std::size_t n = s.levels.size();
   ContactTable t;
-  t.cells.assign(s.integrators.size(), std::vector<std::vector<ContactCellResult>>(s.steps.size(), std::vector<ContactCellResult>(n)));
+  t.cells.assign(s.integrators.size(),
+                 std::vector<std::vector<ContactCellResult>>(s.steps.size(), std::vector<ContactCellResult>(n)));
   t.error.assign(s.integrators.size(), std::vector<std::vector<std::string>>(s.steps.size(), std::vector<std::string>(n)));
   return t;
 }
@@ -71,7 +72,8 @@ ContactTable empty_contact_table(const ContactTimeSettings& s) {
 std::string missing_reason(const ContactTimeSettings& s, const ContactCellResult& r, const std::string& error) {
   if (!error.empty()) return error;
   if (r.first_missing >= 0)
-    return fmt::format("drop {} made no contact within {:g} s ({} of {} did)", r.first_missing, s.max_time, r.contacts, s.drops);
+    return fmt::format("drop {} made no contact within {:g} s ({} of {} did)", r.first_missing, s.max_time, r.contacts,
+                       s.drops);
   return "";
 }
 

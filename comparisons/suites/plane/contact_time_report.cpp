@@ -129,7 +129,8 @@ std::string contact_conclusions(const ContactTimeSettings& s, const ContactTable
   std::string missing;
   each_cell(s, t, [&](std::size_t i, std::size_t j, std::size_t l, const ContactCellResult& c, const std::string& err) {
     if (!missing_reason(s, c, err).empty())
-      missing += fmt::format("{}{} h = {:g} k = {}", missing.empty() ? "" : ", ", integrator_name(s.integrators[i]), s.steps[j], s.levels[l]);
+      missing += fmt::format("{}{} h = {:g} k = {}", missing.empty() ? "" : ", ", integrator_name(s.integrators[i]),
+                             s.steps[j], s.levels[l]);
   });
   if (!missing.empty()) md += "- Left out (failed or incomplete): " + missing + ".\n";
   return md + cost_words(s, t);

@@ -30,7 +30,8 @@ std::string cell(double x, const char* f) { return std::isfinite(x) ? fmt::forma
 
 std::string drop_table(const DropTable& t, bool bullet) {
   std::string md = bullet ? "| z0 [m] | t analytic [s] | t core | t Bullet rigid | t Bullet node | apex analytic [m] | "
-                            "apex core | apex Bullet rigid | apex Bullet node |\n|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n"
+                            "apex core | apex Bullet rigid | apex Bullet node |\n"
+                            "|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n"
                           : "| z0 [m] | t analytic [s] | t core | apex analytic [m] | apex core |\n|---:|---:|---:|---:|---:|\n";
   for (std::size_t i = 0; i < t.rows.size(); ++i) {
     const DropRow& r = t.rows[i];

@@ -26,7 +26,8 @@ std::string method_markdown(const Settings& s, std::uint64_t seed, const std::st
       "while other cases run on the other cores. Categories:\n\n",
       s.random_cases, s.cases_per_category, seed, s.block, referee);
   for (const Category& c : categories) md += fmt::format("- `{}`: {}\n", c.name, c.about);
-  md += "\nChecked per group of categories, each group with its band in the tolerance file (/plane/<engine>_agreement_<group>): ";
+  md += "\nChecked per group of categories, each group with its band in the tolerance file "
+        "(/plane/<engine>_agreement_<group>): ";
   bool first = true;
   for (const CategoryGroup& g : category_groups()) {
     std::string members;

@@ -111,12 +111,19 @@ void record_agreement(CheckList& checks, const Plan& plan, const AgreementTable&
       const GroupTally gt = group_tally(table, plan.categories, g, e);
       const std::string none = gt.tally.cases == 0 ? "no case in group " + g.name : "";
       const std::string why = !gt.error.empty() ? gt.error : none;
-      if (why.empty()) checks.set(agreement, gt.tally.rate());
-      else checks.fail(agreement, why);
+      if (why.empty()) {
+        checks.set(agreement, gt.tally.rate());
+      } else {
+        checks.fail(agreement, why);
+      }
       if (!checks.declared(t_error)) continue;
-      if (!why.empty()) checks.fail(t_error, why);
-      else if (gt.tally.both_hit == 0) checks.fail(t_error, "no case of group " + g.name + " where both " + name + " and the referee hit");
-      else checks.set(t_error, gt.tally.max_t_error);
+      if (!why.empty()) {
+        checks.fail(t_error, why);
+      } else if (gt.tally.both_hit == 0) {
+        checks.fail(t_error, "no case of group " + g.name + " where both " + name + " and the referee hit");
+      } else {
+        checks.set(t_error, gt.tally.max_t_error);
+      }
     }
   }
 }

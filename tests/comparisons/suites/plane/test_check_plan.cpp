@@ -20,7 +20,8 @@ Tolerances scaled(double f) {
   io::Json doc = file_tolerances().doc();
   for (auto it = doc["plane"].begin(); it != doc["plane"].end(); ++it)
     if (it.key()[0] != '_') it.value() = it.value().get<double>() * f;
-  for (const char* g : {"random", "border", "exact-geometry", "grazing", "far"}) doc["plane"][std::string("mine_agreement_") + g] = 0.5 * f;
+  for (const char* g : {"random", "border", "exact-geometry", "grazing", "far"})
+    doc["plane"][std::string("mine_agreement_") + g] = 0.5 * f;
   doc["plane"]["mine_t_error_near"] = 0.1 * f;
   doc["plane"]["mine_t_error_far"] = 0.2 * f;
   return Tolerances(doc, "scaled.json");

@@ -91,7 +91,9 @@ TEST(PlaneReport, ContactConclusionsFollowTheTable) {
   t.cells[0][1][1].max_error = 1.5 * t.cells[0][1][1].tolerance;
   for (std::size_t j = 0; j < 2; ++j) t.cells[1][j][2].max_error = 0.4 * s.steps[j];
   md = contact_conclusions(s, t);
-  EXPECT_TRUE(has(md, "its largest error is 1.5 times the bisection tolerance (h = 0.01 s, k = 8), so the error does not stay within")) << md;
+  EXPECT_TRUE(has(md, "its largest error is 1.5 times the bisection tolerance (h = 0.01 s, k = 8), so the error "
+                      "does not stay within"))
+      << md;
   EXPECT_TRUE(has(md, "at k = 12 its error is 0.4 h to 0.4 h over the steps")) << md;
   EXPECT_TRUE(has(md, "it stops at the integrator's own error")) << md;
   // A failed cell and an incomplete one are left out and named, in the table too.

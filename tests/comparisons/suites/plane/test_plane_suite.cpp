@@ -204,7 +204,8 @@ TEST(PlaneSuite, ShardsMergeIntoTheSameReport) {
   const auto dir = testing::temp_dir("plane-shards");
   ASSERT_EQ(run_cli("suite plane --quick --out " + q(dir / "all")).code, 0);
   for (int i = 0; i < 2; ++i) {
-    const auto r = run_cli("suite plane --quick --shard " + std::to_string(i) + "/2 --out " + q(dir / ("s" + std::to_string(i))));
+    const std::string shard = std::to_string(i);
+    const auto r = run_cli("suite plane --quick --shard " + shard + "/2 --out " + q(dir / ("s" + shard)));
     ASSERT_EQ(r.code, 0) << r.err;
   }
   const auto m = run_cli("merge " + q(dir / "s0") + " " + q(dir / "s1") + " --out " + q(dir / "merged"));
@@ -213,7 +214,8 @@ TEST(PlaneSuite, ShardsMergeIntoTheSameReport) {
   const auto merged = nlohmann::json::parse(testing::slurp(dir / "merged" / "report.json"));
   EXPECT_EQ(testing::check_names(merged), testing::check_names(all));
   EXPECT_EQ(testing::data_without_timings(merged), testing::data_without_timings(all));
-  EXPECT_EQ(testing::slurp(dir / "merged" / "plane" / "disagreements.json"), testing::slurp(dir / "all" / "plane" / "disagreements.json"));
+  EXPECT_EQ(testing::slurp(dir / "merged" / "plane" / "disagreements.json"),
+            testing::slurp(dir / "all" / "plane" / "disagreements.json"));
   std::filesystem::remove_all(dir);
 }
 
