@@ -2,7 +2,7 @@
 #include "comparisons/suites/drift/drift_suite.h"
 #include "comparisons/suites/ccd/ccd_suite.h"
 #include "comparisons/suites/order/order_suite.h"
-#include "comparisons/suites/plane_suite.h"
+#include "comparisons/suites/plane/plane_suite.h"
 #include "comparisons/suites/selfcollision/selfcollision_suite.h"
 #include "comparisons/suites/stability/stability_suite.h"
 #include "comparisons/suites/tradeoff/tradeoff_suite.h"
@@ -16,7 +16,7 @@ const std::vector<SuiteEntry>& suite_registry() {
   static const std::vector<SuiteEntry> suites = {
       {"order", "observed error order of each dynamics engine on analytic problems, against the order it claims", &run_order_suite, &order_sweep},
       {"drift", "energy, momentum and angular momentum over long runs; core vs Bullet on identical cloth", &run_drift_suite, &drift_sweep},
-      {"plane", "segment vs bounded plane agreement with the exact referee; bisected contact time", &run_plane_suite},
+      {"plane", "segment vs bounded plane agreement with the exact referee; bisected contact time", &run_plane_suite, &plane_sweep},
       {"tritri", "triangle-triangle engines vs the exact referee by category, ns per pair", &run_tritri_suite, &tritri_sweep},
       {"ccd", "continuous collision engines vs the exact referee by family (handcrafted kinds, random): misses, false hits, toi error, ns per query", &run_ccd_suite, &ccd_sweep},
       {"selfcollision", "self-collision pair sets per engine vs exact on recorded frames: precision, recall, time", &run_selfcollision_suite, &selfcollision_sweep},
