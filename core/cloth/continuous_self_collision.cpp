@@ -6,6 +6,7 @@
 #include "core/geometry/ccd_pipeline.h"
 
 #include <algorithm>
+#include <cstdint>
 
 namespace tecido {
 
@@ -17,7 +18,8 @@ bool has_vertex(const std::array<int, 3>& t, int v) { return t[0] == v || t[1] =
 
 bool share_vertex(const MeshEdge& e, const MeshEdge& f) { return e[0] == f[0] || e[0] == f[1] || e[1] == f[0] || e[1] == f[1]; }
 
-EdgeEdgePair ordered(const MeshEdge& e, const MeshEdge& f) { return f < e ? EdgeEdgePair{f, e} : EdgeEdgePair{e, f}; }
+/// A pair of nonnegative ids packed so that integer order is the pairs' lexicographic order.
+std::uint64_t pair_key(int a, int b) { return static_cast<std::uint64_t>(a) << 32 | static_cast<std::uint32_t>(b); }
 
 void sort_contacts(ContinuousContacts& c) {
   std::sort(c.vertex_face.begin(), c.vertex_face.end());
@@ -194,7 +196,7 @@ void ContinuousSelfCollisionDetector::test_pair(int i, int j, const std::vector<
       const int v = o.vertex[k];
       if (has_vertex(face, v) || !may_touch(vbox_[v], tbox_[f])) continue;
       ++tests_;
-      if (run(vertex_face_query(x0, x1, v, face))) out_.vertex_face.push_back({v, f});
+      if (run(vertex_face_query(x0, x1, v, face))) vf_keys_.push_back(pair_key(v, f));
     }
   }
   // Edges of one against edges of the other.
@@ -205,16 +207,17 @@ void ContinuousSelfCollisionDetector::test_pair(int i, int j, const std::vector<
       const int eb = oj.edge[b];
       if (share_vertex(edges_[ea], edges_[eb]) || !may_touch(ebox_[ea], ebox_[eb])) continue;
       ++tests_;
-      // The query in the pair's own order (as the brute force builds it): same answer.
-      const EdgeEdgePair pair = ordered(edges_[ea], edges_[eb]);
-      if (run(edge_edge_query(x0, x1, pair[0], pair[1]))) out_.edge_edge.push_back(pair);
+      // The query in the pair's own order (as the brute force builds it): same answer. Edge
+      // ids are numbered in the edges' sorted order, so the smaller id is the first edge.
+      const int lo = std::min(ea, eb), hi = std::max(ea, eb);
+      if (run(edge_edge_query(x0, x1, edges_[lo], edges_[hi]))) ee_keys_.push_back(pair_key(lo, hi));
     }
   }
 }
 
 const ContinuousContacts& ContinuousSelfCollisionDetector::detect(const std::vector<Vec3>& x0, const std::vector<Vec3>& x1) {
-  out_.vertex_face.clear();
-  out_.edge_edge.clear();
+  vf_keys_.clear();
+  ee_keys_.clear();
   tri_pairs_.clear();
   tests_ = kinetic_pairs_ = 0;
   vbox_.resize(x0.size());
@@ -250,15 +253,28 @@ const ContinuousContacts& ContinuousSelfCollisionDetector::detect(const std::vec
   for (const auto& [v, f] : near_vf_) {
     if (!may_touch(vbox_[v], tbox_[f])) continue;
     ++tests_;
-    if (run(vertex_face_query(x0, x1, v, tris_[f]))) out_.vertex_face.push_back({v, f});
+    if (run(vertex_face_query(x0, x1, v, tris_[f]))) vf_keys_.push_back(pair_key(v, f));
   }
   for (const auto& [ea, eb] : near_ee_) {
     if (!may_touch(ebox_[ea], ebox_[eb])) continue;
     ++tests_;
-    if (run(edge_edge_query(x0, x1, edges_[ea], edges_[eb]))) out_.edge_edge.push_back({edges_[ea], edges_[eb]});
+    if (run(edge_edge_query(x0, x1, edges_[ea], edges_[eb]))) ee_keys_.push_back(pair_key(ea, eb));
   }
-  sort_contacts(out_);
+  emit_sorted();
   return out_;
+}
+
+void ContinuousSelfCollisionDetector::emit_sorted() {
+  // Sorting the packed keys sorts the pairs: (v, f) lexicographically, and edge pairs by their
+  // ids, which follow the edges' lexicographic order.
+  std::sort(vf_keys_.begin(), vf_keys_.end());
+  std::sort(ee_keys_.begin(), ee_keys_.end());
+  out_.vertex_face.resize(vf_keys_.size());
+  for (std::size_t k = 0; k < vf_keys_.size(); ++k)
+    out_.vertex_face[k] = {static_cast<int>(vf_keys_[k] >> 32), static_cast<int>(vf_keys_[k] & 0xFFFFFFFFu)};
+  out_.edge_edge.resize(ee_keys_.size());
+  for (std::size_t k = 0; k < ee_keys_.size(); ++k)
+    out_.edge_edge[k] = {edges_[ee_keys_[k] >> 32], edges_[ee_keys_[k] & 0xFFFFFFFFu]};
 }
 
 ContinuousContacts continuous_self_collision(const std::vector<Vec3>& x0, const std::vector<Vec3>& x1,

@@ -29,6 +29,7 @@
 
 #include <array>
 #include <cstddef>
+#include <cstdint>
 #include <functional>
 #include <vector>
 
@@ -92,6 +93,8 @@ class ContinuousSelfCollisionDetector {
   void list_neighbour_features(int vertex_count);
   /// The test's answer on a query whose boxes may_touch already accepted.
   bool run(const CcdQuery& q) const;
+  /// Sorts the keys of the pairs found and writes them out as pairs into out_.
+  void emit_sorted();
 
   std::vector<std::array<int, 3>> tris_;
   std::vector<MeshEdge> edges_;
@@ -104,6 +107,8 @@ class ContinuousSelfCollisionDetector {
   std::vector<std::array<int, 2>> near_vf_;  ///< (vertex, face) of neighbouring owners
   std::vector<std::array<int, 2>> near_ee_;  ///< (edge, edge) ids of neighbouring owners, in pair order
   std::size_t tests_ = 0, kinetic_pairs_ = 0;
+  std::vector<std::uint64_t> vf_keys_;  ///< pairs found: v << 32 | f
+  std::vector<std::uint64_t> ee_keys_;  ///< pairs found: edge id << 32 | edge id, ids ascending
   ContinuousContacts out_;
 };
 
