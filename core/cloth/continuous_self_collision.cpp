@@ -2,7 +2,7 @@
 
 #include "core/cloth/mesh_topology.h"
 #include "core/geometry/ccd.h"
-#include "core/geometry/ccd_kinetic_boxes.h"
+#include "core/geometry/ccd_batch_stages.h"
 #include "core/geometry/ccd_pipeline.h"
 
 #include <algorithm>
@@ -46,29 +46,34 @@ void point_box(double b[6], const Vec3& p) {
   for (int c = 0; c < 3; ++c) b[c] = b[c + 3] = p[c];
 }
 
-/// The first stages of core's test (ccd_pipeline.cpp) on two primitives' boxes at both frames:
-/// their swept boxes (the union of the two) overlap and their kinetic boxes are not certainly
-/// disjoint. The boxes are those the pipeline computes from the query's points, so a pair
-/// rejected here is one the test would reject.
-template <class B>
-bool may_touch(const B& a, const B& b) {
+/// The box of two boxes (lo xyz, hi xyz).
+template <class S>
+S merged(const S& a, const S& b) {
+  S m;
   for (int c = 0; c < 3; ++c) {
-    const double alo = std::min(a.b0[c], a.b1[c]), ahi = std::max(a.b0[c + 3], a.b1[c + 3]);
-    const double blo = std::min(b.b0[c], b.b1[c]), bhi = std::max(b.b0[c + 3], b.b1[c + 3]);
-    if (ahi < blo || bhi < alo) return false;
+    m.b[c] = std::min(a.b[c], b.b[c]);
+    m.b[c + 3] = std::max(a.b[c + 3], b.b[c + 3]);
   }
-  return !ccd_kinetic_boxes_disjoint(a.b0, a.b1, b.b0, b.b1);
+  return m;
 }
 
-/// Swept boxes overlap (the cheap half of may_touch).
-template <class B>
-bool swept_overlap(const B& a, const B& b) {
-  for (int c = 0; c < 3; ++c) {
-    const double alo = std::min(a.b0[c], a.b1[c]), ahi = std::max(a.b0[c + 3], a.b1[c + 3]);
-    const double blo = std::min(b.b0[c], b.b1[c]), bhi = std::max(b.b0[c + 3], b.b1[c + 3]);
-    if (ahi < blo || bhi < alo) return false;
+/// Pairs queued before the batched first stages run on them.
+constexpr int kChunk = 256;
+
+CcdQuery query_of(CcdKind kind, const std::array<int, 4>& points, const std::vector<Vec3>& x0, const std::vector<Vec3>& x1) {
+  CcdQuery q;
+  q.kind = kind;
+  for (int k = 0; k < 4; ++k) {
+    q.x0[k] = x0[points[k]];
+    q.x1[k] = x1[points[k]];
   }
-  return true;
+  return q;
+}
+
+/// Swept boxes (lo xyz, hi xyz over both frames) overlap: exact comparisons, as
+/// ccd_pipeline.cpp's stage 2 (its boxes are the same minima and maxima of the same points).
+bool swept_overlap(const double a[6], const double b[6]) {
+  return !(a[3] < b[0] || b[3] < a[0] || a[4] < b[1] || b[4] < a[1] || a[5] < b[2] || b[5] < a[2]);
 }
 
 }  // namespace
@@ -160,31 +165,76 @@ void ContinuousSelfCollisionDetector::list_neighbour_features(int vertex_count) 
     for (int side = 0; side < 2; ++side) {
       const Owned& o = owned_[side == 0 ? i : j];
       const int f = side == 0 ? j : i;
-      for (int k = 0; k < o.vertices; ++k)
-        if (!has_vertex(tris_[f], o.vertex[k])) near_vf_.push_back({o.vertex[k], f});
+      const std::array<int, 3>& face = tris_[f];
+      for (int k = 0; k < o.vertices; ++k) {
+        if (has_vertex(face, o.vertex[k])) continue;
+        near_vf_points_.push_back({o.vertex[k], face[0], face[1], face[2]});
+        near_vf_keys_.push_back(pair_key(o.vertex[k], f));
+      }
     }
     for (int a = 0; a < owned_[i].edge_count; ++a) {
       for (int b = 0; b < owned_[j].edge_count; ++b) {
-        int ea = owned_[i].edge[a], eb = owned_[j].edge[b];
+        const int ea = owned_[i].edge[a], eb = owned_[j].edge[b];
         if (share_vertex(edges_[ea], edges_[eb])) continue;
-        if (edges_[eb] < edges_[ea]) std::swap(ea, eb);
-        near_ee_.push_back({ea, eb});
+        const MeshEdge& e = edges_[std::min(ea, eb)];
+        const MeshEdge& g = edges_[std::max(ea, eb)];
+        near_ee_points_.push_back({e[0], e[1], g[0], g[1]});
+        near_ee_keys_.push_back(pair_key(std::min(ea, eb), std::max(ea, eb)));
       }
     }
   }
 }
 
 bool ContinuousSelfCollisionDetector::run(const CcdQuery& q) const {
-  // Core's test: its box stages were just run here on the same boxes (may_touch), so go on
-  // from the next stage (the same answer, without checking the boxes twice).
+  // Core's test: its box stages (and, when they certify, the cubic) were already run here on
+  // the same numbers, so go on from the next stage (the same answer).
   return test_ == &default_test ? ccd_after_boxes(q).hit : test_(q).hit;
 }
 
+void ContinuousSelfCollisionDetector::sift(CcdKind kind, const std::array<int, 4>* points, const std::uint64_t* keys,
+                                          int n, const std::vector<Vec3>& x0, const std::vector<Vec3>& x1) {
+  static_assert(sizeof(Vec3) == 3 * sizeof(double), "positions are read as packed doubles");
+  const double* p0 = reinterpret_cast<const double*>(x0.data());
+  const double* p1 = reinterpret_cast<const double*>(x1.data());
+  // The cubic verdict is core's test's own stage: a custom test gets the box stages only.
+  const bool cubic = test_ == &default_test;
+  std::vector<std::uint64_t>& found = kind == CcdKind::VertexFace ? vf_keys_ : ee_keys_;
+  verdict_.resize(kChunk);
+  for (int first = 0; first < n; first += kChunk) {
+    const int m = std::min(kChunk, n - first);
+    ccd_batch_first_stages(kind, p0, p1, points + first, m, cubic, verdict_.data(), width_);
+    for (int k = 0; k < m; ++k) {
+      const std::uint8_t v = verdict_[k];
+      if (v & kCcdBoxesDisjoint) continue;
+      ++tests_;  // the pair passed the box stages: handed to the test
+      if (v & kCcdCubicMiss) continue;
+      if (run(query_of(kind, points[first + k], x0, x1))) found.push_back(keys[first + k]);
+    }
+  }
+}
+
+void ContinuousSelfCollisionDetector::push(CcdKind kind, const std::array<int, 4>& points, std::uint64_t key,
+                                          const std::vector<Vec3>& x0, const std::vector<Vec3>& x1) {
+  Pending& p = pending_[kind == CcdKind::VertexFace ? 0 : 1];
+  p.points.push_back(points);
+  p.keys.push_back(key);
+  if (p.points.size() < static_cast<std::size_t>(kChunk)) return;
+  sift(kind, p.points.data(), p.keys.data(), kChunk, x0, x1);
+  p.points.clear();
+  p.keys.clear();
+}
+
+void ContinuousSelfCollisionDetector::flush(const std::vector<Vec3>& x0, const std::vector<Vec3>& x1) {
+  for (int kind = 0; kind < 2; ++kind) {
+    Pending& p = pending_[kind];
+    sift(kind == 0 ? CcdKind::VertexFace : CcdKind::EdgeEdge, p.points.data(), p.keys.data(),
+         static_cast<int>(p.points.size()), x0, x1);
+    p.points.clear();
+    p.keys.clear();
+  }
+}
+
 void ContinuousSelfCollisionDetector::test_pair(int i, int j, const std::vector<Vec3>& x0, const std::vector<Vec3>& x1) {
-  // Every feature's boxes lie in its triangle's, so triangles whose kinetic boxes never meet
-  // have no feature pair that may touch.
-  if (ccd_kinetic_boxes_disjoint(tbox_[i].b0, tbox_[i].b1, tbox_[j].b0, tbox_[j].b1)) return;
-  ++kinetic_pairs_;
   const Owned& oi = owned_[i];
   const Owned& oj = owned_[j];
   // Vertices of one triangle against the other face.
@@ -194,23 +244,22 @@ void ContinuousSelfCollisionDetector::test_pair(int i, int j, const std::vector<
     const std::array<int, 3>& face = tris_[f];
     for (int k = 0; k < o.vertices; ++k) {
       const int v = o.vertex[k];
-      if (has_vertex(face, v) || !may_touch(vbox_[v], tbox_[f])) continue;
-      ++tests_;
-      if (run(vertex_face_query(x0, x1, v, face))) vf_keys_.push_back(pair_key(v, f));
+      if (!has_vertex(face, v) && swept_overlap(vsw_[v].b, tsw_[f].b))
+        push(CcdKind::VertexFace, {v, face[0], face[1], face[2]}, pair_key(v, f), x0, x1);
     }
   }
-  // Edges of one against edges of the other.
+  // Edges of one against edges of the other. An edge whose swept box misses the other
+  // triangle's misses those of its edges (they lie inside): ccd's stage 2 rejects them all.
   for (int a = 0; a < oi.edge_count; ++a) {
     const int ea = oi.edge[a];
-    if (!swept_overlap(ebox_[ea], tbox_[j])) continue;
+    if (!swept_overlap(esw_[ea].b, tsw_[j].b)) continue;
     for (int b = 0; b < oj.edge_count; ++b) {
       const int eb = oj.edge[b];
-      if (share_vertex(edges_[ea], edges_[eb]) || !may_touch(ebox_[ea], ebox_[eb])) continue;
-      ++tests_;
+      if (share_vertex(edges_[ea], edges_[eb]) || !swept_overlap(esw_[ea].b, esw_[eb].b)) continue;
       // The query in the pair's own order (as the brute force builds it): same answer. Edge
       // ids are numbered in the edges' sorted order, so the smaller id is the first edge.
       const int lo = std::min(ea, eb), hi = std::max(ea, eb);
-      if (run(edge_edge_query(x0, x1, edges_[lo], edges_[hi]))) ee_keys_.push_back(pair_key(lo, hi));
+      push(CcdKind::EdgeEdge, {edges_[lo][0], edges_[lo][1], edges_[hi][0], edges_[hi][1]}, pair_key(lo, hi), x0, x1);
     }
   }
 }
@@ -220,24 +269,28 @@ const ContinuousContacts& ContinuousSelfCollisionDetector::detect(const std::vec
   ee_keys_.clear();
   tri_pairs_.clear();
   tests_ = kinetic_pairs_ = 0;
-  vbox_.resize(x0.size());
+  vsw_.resize(x0.size());
   for (std::size_t v = 0; v < x0.size(); ++v) {
-    point_box(vbox_[v].b0, x0[v]);
-    point_box(vbox_[v].b1, x1[v]);
-  }
-  ebox_.resize(edges_.size());
-  for (std::size_t e = 0; e < edges_.size(); ++e) {
-    ebox_[e] = vbox_[edges_[e][0]];
-    extend(ebox_[e].b0, x0[edges_[e][1]]);
-    extend(ebox_[e].b1, x1[edges_[e][1]]);
-  }
-  tbox_.resize(tris_.size());
-  for (std::size_t t = 0; t < tris_.size(); ++t) {
-    tbox_[t] = vbox_[tris_[t][0]];
-    for (int k = 1; k < 3; ++k) {
-      extend(tbox_[t].b0, x0[tris_[t][k]]);
-      extend(tbox_[t].b1, x1[tris_[t][k]]);
+    for (int c = 0; c < 3; ++c) {
+      vsw_[v].b[c] = std::min(x0[v][c], x1[v][c]);
+      vsw_[v].b[c + 3] = std::max(x0[v][c], x1[v][c]);
     }
+  }
+  esw_.resize(edges_.size());
+  for (std::size_t e = 0; e < edges_.size(); ++e) esw_[e] = merged(vsw_[edges_[e][0]], vsw_[edges_[e][1]]);
+  tbox_.resize(tris_.size());
+  tsw_.resize(tris_.size());
+  for (std::size_t t = 0; t < tris_.size(); ++t) {
+    const std::array<int, 3>& tri = tris_[t];
+    double* b0 = tbox_[t].data();
+    double* b1 = b0 + 6;
+    point_box(b0, x0[tri[0]]);
+    point_box(b1, x1[tri[0]]);
+    for (int k = 1; k < 3; ++k) {
+      extend(b0, x0[tri[k]]);
+      extend(b1, x1[tri[k]]);
+    }
+    tsw_[t] = merged(merged(vsw_[tri[0]], vsw_[tri[1]]), vsw_[tri[2]]);
   }
   // The tree sees the motion in a frame moving with the mean displacement D: contact is the
   // same when every point at time t is moved by -t D, and the tree's float boxes are rounded
@@ -249,17 +302,27 @@ const ContinuousContacts& ContinuousSelfCollisionDetector::detect(const std::vec
   for (std::size_t v = 0; v < x1.size(); ++v) moved_[v] = x1[v] - mean;
   bvh_.refit(x0, moved_);
   bvh_.overlapping_pairs(tri_pairs_);  // pairs sharing no vertex; neighbours are listed
-  for (const auto& p : tri_pairs_) test_pair(p[0], p[1], x0, x1);
-  for (const auto& [v, f] : near_vf_) {
-    if (!may_touch(vbox_[v], tbox_[f])) continue;
-    ++tests_;
-    if (run(vertex_face_query(x0, x1, v, tris_[f]))) vf_keys_.push_back(pair_key(v, f));
+  // Every feature's boxes lie in its triangle's, so triangles whose kinetic boxes never meet
+  // have no feature pair that may touch.
+  const int np = static_cast<int>(tri_pairs_.size());
+  tri_disjoint_.resize(tri_pairs_.size());
+  ccd_batch_kinetic_boxes(tbox_.data(), tri_pairs_.data(), np, tri_disjoint_.data(), width_);
+  for (int k = 0; k < np; ++k) {
+    if (tri_disjoint_[k]) continue;
+    ++kinetic_pairs_;
+    test_pair(tri_pairs_[k][0], tri_pairs_[k][1], x0, x1);
   }
-  for (const auto& [ea, eb] : near_ee_) {
-    if (!may_touch(ebox_[ea], ebox_[eb])) continue;
-    ++tests_;
-    if (run(edge_edge_query(x0, x1, edges_[ea], edges_[eb]))) ee_keys_.push_back(pair_key(ea, eb));
+  for (std::size_t k = 0; k < near_vf_keys_.size(); ++k) {
+    const std::uint64_t key = near_vf_keys_[k];
+    if (swept_overlap(vsw_[key >> 32].b, tsw_[key & 0xFFFFFFFFu].b))
+      push(CcdKind::VertexFace, near_vf_points_[k], key, x0, x1);
   }
+  for (std::size_t k = 0; k < near_ee_keys_.size(); ++k) {
+    const std::uint64_t key = near_ee_keys_[k];
+    if (swept_overlap(esw_[key >> 32].b, esw_[key & 0xFFFFFFFFu].b))
+      push(CcdKind::EdgeEdge, near_ee_points_[k], key, x0, x1);
+  }
+  flush(x0, x1);
   emit_sorted();
   return out_;
 }

@@ -78,20 +78,40 @@ class ContinuousSelfCollisionDetector {
   /// Triangle pairs whose kinetic boxes may meet (their features were examined).
   std::size_t last_kinetic_pairs() const { return kinetic_pairs_; }
 
+ /// The widths of core's batched first stages (core/geometry/ccd_batch_stages.h): 0 the
+  /// widest this CPU runs (default), or 2, 4, 8 when available. The output does not depend on
+  /// it; tests compare.
+  void set_simd_width(int width) { width_ = width; }
+
  private:
   /// The features one triangle owns: up to three vertices and three edges (ids into edges_).
   struct Owned {
     int vertex[3], edge[3];
     int vertices = 0, edge_count = 0;
   };
-  /// A primitive's boxes at the two frames (lo xyz, hi xyz each).
-  struct Boxes {
-    double b0[6], b1[6];
+  /// A primitive's swept box: lo xyz, hi xyz over both frames.
+  struct Swept {
+    double b[6];
+  };
+  /// Primitive pairs of one kind waiting for the batched first stages: the query's points
+  /// (ccd_query.h order) and the pair's output key.
+  struct Pending {
+    std::vector<std::array<int, 4>> points;
+    std::vector<std::uint64_t> keys;
   };
   void test_pair(int i, int j, const std::vector<Vec3>& x0, const std::vector<Vec3>& x1);
-  /// Fills near_vf_, near_ee_ with the feature pairs of triangles that share a vertex.
+  /// Queues one primitive pair of a tree pair; runs the queue when it is full.
+  void push(CcdKind kind, const std::array<int, 4>& points, std::uint64_t key, const std::vector<Vec3>& x0,
+            const std::vector<Vec3>& x1);
+  /// Runs both queues.
+  void flush(const std::vector<Vec3>& x0, const std::vector<Vec3>& x1);
+  /// The first stages on n queued or listed pairs, then the test on those they leave open;
+  /// keys of pairs the test accepts go to vf_keys_ / ee_keys_.
+  void sift(CcdKind kind, const std::array<int, 4>* points, const std::uint64_t* keys, int n,
+            const std::vector<Vec3>& x0, const std::vector<Vec3>& x1);
+  /// Fills the near_ lists with the feature pairs of triangles that share a vertex.
   void list_neighbour_features(int vertex_count);
-  /// The test's answer on a query whose boxes may_touch already accepted.
+  /// The test's answer on a query whose box stages were passed.
   bool run(const CcdQuery& q) const;
   /// Sorts the keys of the pairs found and writes them out as pairs into out_.
   void emit_sorted();
@@ -102,10 +122,17 @@ class ContinuousSelfCollisionDetector {
   CcdTest test_;
   TriangleBvh bvh_;
   std::vector<std::array<int, 2>> tri_pairs_;
-  std::vector<Boxes> vbox_, ebox_, tbox_;  ///< per vertex, edge, triangle
-  std::vector<Vec3> moved_;                 ///< x1 in the frame of the mean displacement
-  std::vector<std::array<int, 2>> near_vf_;  ///< (vertex, face) of neighbouring owners
-  std::vector<std::array<int, 2>> near_ee_;  ///< (edge, edge) ids of neighbouring owners, in pair order
+  std::vector<std::array<double, 12>> tbox_;  ///< per triangle: boxes at t = 0, t = 1 (lo xyz, hi xyz)
+  std::vector<std::uint8_t> tri_disjoint_;    ///< per tree pair: kinetic boxes disjoint
+  std::vector<Swept> vsw_, esw_, tsw_;  ///< per vertex, edge, triangle
+  std::vector<Vec3> moved_;         ///< x1 in the frame of the mean displacement
+  /// Pairs of features of neighbouring owners, as query points and keys (vertex-face: v << 32
+  /// | f; edge-edge: ids ascending), in pair order.
+  std::vector<std::array<int, 4>> near_vf_points_, near_ee_points_;
+  std::vector<std::uint64_t> near_vf_keys_, near_ee_keys_;
+  Pending pending_[2];                ///< [0] vertex-face, [1] edge-edge
+  std::vector<std::uint8_t> verdict_;  ///< the first stages' verdicts of one chunk
+  int width_ = 0;
   std::size_t tests_ = 0, kinetic_pairs_ = 0;
   std::vector<std::uint64_t> vf_keys_;  ///< pairs found: v << 32 | f
   std::vector<std::uint64_t> ee_keys_;  ///< pairs found: edge id << 32 | edge id, ids ascending

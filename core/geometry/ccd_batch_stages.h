@@ -1,0 +1,61 @@
+#pragma once
+/// The first stages of core's continuous collision test (ccd.h: swept boxes, kinetic boxes, the
+/// coplanarity cubic on [0, 1]) decided for many queries at once, several per SIMD register, for
+/// a caller that holds the queries as point indices into two position arrays (a mesh's frames:
+/// continuous self-collision, core/cloth/continuous_self_collision.h); and the kinetic test
+/// alone on many pairs of boxes (its broad phase's triangle pairs).
+///
+/// Each decision is the one ccd's own stage takes on the same query, computed by the same
+/// operations on the same doubles in the same order, lane by lane (IEEE-754 round-to-nearest,
+/// no fused multiply-add: the vector functions are compiled with fp-contract off), so it is
+/// bit for bit that stage's, whatever the vector width:
+///  - swept boxes (ccd_pipeline.cpp, stage 2): each primitive's box over both frames, compared
+///    exactly; disjoint means ccd answers miss;
+///  - kinetic boxes (ccd_kinetic_boxes.h): its 1-D linear program, the same operations (the
+///    divisions included: IEEE division is correctly rounded in every width), its early
+///    returns turned into lane masks;
+///  - the coplanarity cubic (ccd_coplanarity_cubic.h, stage 4) with its cheap bound
+///    6 mx my mz: coefficients all beyond the bound mean ccd answers miss (ccd keeps the cheap
+///    bound exactly when it certifies, and then rejects). It is applied only where ccd would
+///    not rescale the query (ccd_system.h): the largest component of X, Y, Z over both frames
+///    in [2^-128, 2^125] (then P and Q stay below 2^127 and the sum of all components is
+///    finite, so ccd's scale is 1 and its differences are these). Elsewhere, and where the
+///    cheap bound does not certify (ccd would then try the permanents), no cubic verdict.
+/// The stages commute: ccd answers miss when any of them certifies (for finite input the
+/// system's "all points coincide" case has f = 0, which no bound certifies), so a caller may
+/// act on any verdict in any order and still give ccd's answer.
+///
+/// Widths: 2 (SSE2, part of x86-64, and the generic build), 4 (AVX) and 8 (AVX-512F), chosen
+/// at run time from what the CPU has; the verdicts do not depend on the width (tests compare).
+#include "core/geometry/ccd_query.h"
+
+#include <array>
+#include <cstdint>
+
+namespace tecido {
+
+/// Verdict bits, per query.
+enum CcdBatchVerdict : std::uint8_t {
+  kCcdBoxesDisjoint = 1,  ///< swept or kinetic boxes disjoint: ccd answers miss at its stage 2
+  kCcdCubicMiss = 2,      ///< boxes not disjoint, the cubic certainly nonzero on [0, 1] (cheap bound, unscaled): ccd answers miss
+};
+
+/// The widest vector width this CPU runs (8, 4 or 2), and whether a width can run here.
+int ccd_batch_widest();
+bool ccd_batch_width_available(int width);
+
+/// For each of the n queries (points queries[k][0..3] in the order of ccd_query.h, indices
+/// into x0 and x1, packed x, y, z doubles at t = 0 and t = 1), the verdict bits above into
+/// verdict[k]; the cubic is evaluated only when `cubic` is true. Finite positions. width 0:
+/// the widest available; otherwise one of 2, 4, 8 that is available.
+void ccd_batch_first_stages(CcdKind kind, const double* x0, const double* x1, const std::array<int, 4>* queries,
+                            int n, bool cubic, std::uint8_t* verdict, int width = 0);
+
+/// ccd_kinetic_boxes_disjoint(a0, a1, b0, b1) for each of the n pairs: boxes[i] is a
+/// primitive's box at t = 0 then at t = 1 (lo xyz, hi xyz each), pair k is the primitives
+/// pairs[k][0] (a) and pairs[k][1] (b); disjoint[k] is 1 when the test answers true, else 0.
+/// Finite boxes. width as above.
+void ccd_batch_kinetic_boxes(const std::array<double, 12>* boxes, const std::array<int, 2>* pairs, int n, std::uint8_t* disjoint,
+                             int width = 0);
+
+}  // namespace tecido
