@@ -1,5 +1,7 @@
 #include "core/cloth/triangle_bvh.h"
 
+#include "core/geometry/outward_float.h"
+
 #include <algorithm>
 #include <cfloat>
 #include <cmath>
@@ -20,23 +22,6 @@
 namespace tecido {
 
 namespace {
-
-// Outward rounding of a double to float without branches. (float)d is within half an ulp of
-// d; moving it away by |f| 2^-23 + 2^-126 (at least one ulp of f, and at least the smallest
-// normal float) gives a float on the far side of d, whatever the rounding of the subtraction
-// itself (the exact result lies at least one ulp beyond f, and f +- ulp is representable).
-// Everything is clamped to [-FLT_MAX, FLT_MAX]: clamping is monotone, so two intervals that
-// overlap still overlap after it, the boxes stay finite, and the empty lanes' inverted
-// infinite boxes (lo = +inf, hi = -inf) can never overlap one.
-constexpr double kFloatMax = FLT_MAX;
-inline float float_down(double d) {
-  const float f = static_cast<float>(std::min(std::max(d, -kFloatMax), kFloatMax));
-  return std::max(f - (std::fabs(f) * 0x1p-23f + FLT_MIN), -FLT_MAX);
-}
-inline float float_up(double d) {
-  const float f = static_cast<float>(std::min(std::max(d, -kFloatMax), kFloatMax));
-  return std::min(f + (std::fabs(f) * 0x1p-23f + FLT_MIN), FLT_MAX);
-}
 
 constexpr float kInf = std::numeric_limits<float>::infinity();
 
@@ -94,6 +79,38 @@ TECIDO_BVH_TARGET_AVX512 unsigned leaf_mask16_avx512(const float* alo, const flo
                                    _mm512_cmpeq_epi32_mask(a, b2));
   }
   return box_mask16_avx512(alo, ahi, blo, bhi) & ~static_cast<unsigned>(share) & 0xFFFFu;
+}
+
+/// kinetic_lanes on the 16 lane pairs at once (the same operations lane by lane as
+/// kinetic_row_sse2 below; see kinetic_lanes for the method). a and b point at Frames lo/hi.
+TECIDO_BVH_TARGET_AVX512 unsigned kinetic_mask16_avx512(const float* alo, const float* ahi, const float* blo,
+                                                         const float* bhi) {
+  const __m512 zero = _mm512_setzero_ps();
+  __m512 lower = zero, upper = _mm512_set1_ps(1.0f);
+  __mmask16 reject = 0;
+  for (int c = 0; c < 3; ++c) {
+    for (int k = 0; k < 2; ++k) {
+      // Constraint k of axis c at frame f: hi_b - lo_a (k = 0) or hi_a - lo_b (k = 1).
+      __m512 v[2];
+      for (int f = 0; f < 2; ++f) {
+        const int row = 12 * f + 4 * c;
+        v[f] = k == 0 ? _mm512_sub_ps(tile4(bhi + row), repeat4(alo + row)) : _mm512_sub_ps(repeat4(ahi + row), tile4(blo + row));
+      }
+      const __m512 m = _mm512_add_ps(_mm512_mul_ps(_mm512_maskz_max_ps(0xFFFF, _mm512_abs_ps(v[0]), _mm512_abs_ps(v[1])),
+                                                   _mm512_set1_ps(0x1p-21f)), _mm512_set1_ps(FLT_MIN));
+      const __m512 a = _mm512_add_ps(v[0], m), e = _mm512_add_ps(v[1], m);
+      const __mmask16 rising = _mm512_cmp_ps_mask(a, zero, _CMP_LT_OQ), e_neg = _mm512_cmp_ps_mask(e, zero, _CMP_LT_OQ);
+      reject = static_cast<__mmask16>(reject | (rising & e_neg));
+      const __mmask16 falling = static_cast<__mmask16>(~rising & e_neg);
+      const __m512 t = _mm512_div_ps(a, _mm512_sub_ps(a, e));
+      const __m512 lo = _mm512_sub_ps(_mm512_mul_ps(t, _mm512_set1_ps(1.0f - 0x1p-20f)), _mm512_set1_ps(0x1p-100f));
+      const __m512 hi = _mm512_add_ps(_mm512_mul_ps(t, _mm512_set1_ps(1.0f + 0x1p-20f)), _mm512_set1_ps(0x1p-100f));
+      lower = _mm512_mask_max_ps(lower, rising, lower, lo);
+      upper = _mm512_mask_min_ps(upper, falling, upper, hi);
+    }
+  }
+  const __mmask16 disjoint = static_cast<__mmask16>(reject | _mm512_cmp_ps_mask(lower, upper, _CMP_GT_OQ));
+  return ~static_cast<unsigned>(disjoint) & 0xFFFFu;
 }
 
 bool cpu_has_avx512f() {
@@ -231,16 +248,60 @@ void TriangleBvh::refit(const std::vector<Vec3>& x0, const std::vector<Vec3>& x1
   const std::size_t nv = x0.size();
   vlo_.resize(nv);
   vhi_.resize(nv);
+  for (int f = 0; f < 2; ++f) {
+    flo_[f].resize(nv);
+    fhi_[f].resize(nv);
+  }
   for (std::size_t v = 0; v < nv; ++v) {
     for (int d = 0; d < 3; ++d) {
+      flo_[0][v][d] = float_down(x0[v][d]);
+      fhi_[0][v][d] = float_up(x0[v][d]);
+      flo_[1][v][d] = float_down(x1[v][d]);
+      fhi_[1][v][d] = float_up(x1[v][d]);
       // float_down / float_up are monotone: the bounds of the min / max are the min / max of
-      // the bounds, so this contains both frames' outward boxes.
-      vlo_[v][d] = float_down(std::min(x0[v][d], x1[v][d]));
-      vhi_[v][d] = float_up(std::max(x0[v][d], x1[v][d]));
+      // the bounds, so this is the outward box of both frames.
+      vlo_[v][d] = std::min(flo_[0][v][d], flo_[1][v][d]);
+      vhi_[v][d] = std::max(fhi_[0][v][d], fhi_[1][v][d]);
     }
     vlo_[v][3] = vhi_[v][3] = 0.0f;
+    for (int f = 0; f < 2; ++f) flo_[f][v][3] = fhi_[f][v][3] = 0.0f;
   }
   refit_from_vertex_bounds();
+  refit_frames();
+}
+
+void TriangleBvh::refit_frames() {
+  frames_.resize(nodes_.size());
+  for (int f = 0; f < 2; ++f) frame_box_[f].resize(nodes_.size());
+  for (std::size_t k = nodes_.size(); k-- > 0;) {
+    const Node& nd = nodes_[k];
+    Frames& fr = frames_[k];
+    for (int f = 0; f < 2; ++f) {
+      for (int lane = 0; lane < kWidth; ++lane) {
+        for (int d = 0; d < 3; ++d) {
+          fr.lo[f][d][lane] = kInf;  // empty lanes: inverted, as the node's own
+          fr.hi[f][d][lane] = -kInf;
+        }
+        if (lane >= nd.count) continue;
+        for (int d = 0; d < 3; ++d) {
+          if (nd.leaf) {
+            const LeafVerts& lv = nd.lv;
+            const int a = lv.v[0][lane], b = lv.v[1][lane], c = lv.v[2][lane];
+            fr.lo[f][d][lane] = std::min(flo_[f][a][d], std::min(flo_[f][b][d], flo_[f][c][d]));
+            fr.hi[f][d][lane] = std::max(fhi_[f][a][d], std::max(fhi_[f][b][d], fhi_[f][c][d]));
+          } else {
+            fr.lo[f][d][lane] = frame_box_[f][nd.child[lane]].lo[d];
+            fr.hi[f][d][lane] = frame_box_[f][nd.child[lane]].hi[d];
+          }
+        }
+      }
+      Box& box = frame_box_[f][k];
+      for (int d = 0; d < 3; ++d) {
+        box.lo[d] = std::min(std::min(fr.lo[f][d][0], fr.lo[f][d][1]), std::min(fr.lo[f][d][2], fr.lo[f][d][3]));
+        box.hi[d] = std::max(std::max(fr.hi[f][d][0], fr.hi[f][d][1]), std::max(fr.hi[f][d][2], fr.hi[f][d][3]));
+      }
+    }
+  }
 }
 
 void TriangleBvh::refit_from_vertex_bounds() {
@@ -279,19 +340,24 @@ void TriangleBvh::refit_from_vertex_bounds() {
 }
 
 unsigned TriangleBvh::lanes_overlapping(const Node& b, const float lo[3], const float hi[3]) {
+  return lanes_overlapping(b.lo, b.hi, lo, hi);
+}
+
+unsigned TriangleBvh::lanes_overlapping(const float (&blo)[3][kWidth], const float (&bhi)[3][kWidth], const float lo[3],
+                                        const float hi[3]) {
 #if defined(__SSE2__)
-  __m128 m = _mm_and_ps(_mm_cmple_ps(_mm_loadu_ps(b.lo[0]), _mm_set1_ps(hi[0])),
-                        _mm_cmple_ps(_mm_set1_ps(lo[0]), _mm_loadu_ps(b.hi[0])));
-  m = _mm_and_ps(m, _mm_cmple_ps(_mm_loadu_ps(b.lo[1]), _mm_set1_ps(hi[1])));
-  m = _mm_and_ps(m, _mm_cmple_ps(_mm_set1_ps(lo[1]), _mm_loadu_ps(b.hi[1])));
-  m = _mm_and_ps(m, _mm_cmple_ps(_mm_loadu_ps(b.lo[2]), _mm_set1_ps(hi[2])));
-  m = _mm_and_ps(m, _mm_cmple_ps(_mm_set1_ps(lo[2]), _mm_loadu_ps(b.hi[2])));
+  __m128 m = _mm_and_ps(_mm_cmple_ps(_mm_loadu_ps(blo[0]), _mm_set1_ps(hi[0])),
+                        _mm_cmple_ps(_mm_set1_ps(lo[0]), _mm_loadu_ps(bhi[0])));
+  m = _mm_and_ps(m, _mm_cmple_ps(_mm_loadu_ps(blo[1]), _mm_set1_ps(hi[1])));
+  m = _mm_and_ps(m, _mm_cmple_ps(_mm_set1_ps(lo[1]), _mm_loadu_ps(bhi[1])));
+  m = _mm_and_ps(m, _mm_cmple_ps(_mm_loadu_ps(blo[2]), _mm_set1_ps(hi[2])));
+  m = _mm_and_ps(m, _mm_cmple_ps(_mm_set1_ps(lo[2]), _mm_loadu_ps(bhi[2])));
   return static_cast<unsigned>(_mm_movemask_ps(m));
 #else
   unsigned m = 0;
   for (int k = 0; k < kWidth; ++k) {
-    const bool o = (b.lo[0][k] <= hi[0]) & (lo[0] <= b.hi[0][k]) & (b.lo[1][k] <= hi[1]) & (lo[1] <= b.hi[1][k]) &
-                   (b.lo[2][k] <= hi[2]) & (lo[2] <= b.hi[2][k]);
+    const bool o = (blo[0][k] <= hi[0]) & (lo[0] <= bhi[0][k]) & (blo[1][k] <= hi[1]) & (lo[1] <= bhi[1][k]) &
+                   (blo[2][k] <= hi[2]) & (lo[2] <= bhi[2][k]);
     m |= static_cast<unsigned>(o) << k;
   }
   return m;
@@ -321,6 +387,97 @@ unsigned TriangleBvh::lanes_sharing(const LeafVerts& b, int v0, int v1, int v2) 
 #endif
 }
 
+namespace {
+
+#if defined(__SSE2__)
+/// kinetic_lanes for lane k of a against the four lanes of b: bit l set when they may meet.
+unsigned kinetic_row_sse2(const float (*alo)[3][4], const float (*ahi)[3][4], const float (*blo)[3][4],
+                          const float (*bhi)[3][4], int k) {
+  const __m128 zero = _mm_setzero_ps(), sign = _mm_set1_ps(-0.0f);
+  __m128 lower = zero, upper = _mm_set1_ps(1.0f), reject = zero;
+  for (int c = 0; c < 3; ++c) {
+    for (int j = 0; j < 2; ++j) {
+      __m128 v[2];
+      for (int f = 0; f < 2; ++f) {
+        v[f] = j == 0 ? _mm_sub_ps(_mm_loadu_ps(bhi[f][c]), _mm_set1_ps(alo[f][c][k]))
+                      : _mm_sub_ps(_mm_set1_ps(ahi[f][c][k]), _mm_loadu_ps(blo[f][c]));
+      }
+      const __m128 m = _mm_add_ps(_mm_mul_ps(_mm_max_ps(_mm_andnot_ps(sign, v[0]), _mm_andnot_ps(sign, v[1])),
+                                             _mm_set1_ps(0x1p-21f)), _mm_set1_ps(FLT_MIN));
+      const __m128 a = _mm_add_ps(v[0], m), e = _mm_add_ps(v[1], m);
+      const __m128 rising = _mm_cmplt_ps(a, zero), e_neg = _mm_cmplt_ps(e, zero);
+      reject = _mm_or_ps(reject, _mm_and_ps(rising, e_neg));
+      const __m128 falling = _mm_andnot_ps(rising, e_neg);
+      const __m128 t = _mm_div_ps(a, _mm_sub_ps(a, e));
+      const __m128 lo = _mm_sub_ps(_mm_mul_ps(t, _mm_set1_ps(1.0f - 0x1p-20f)), _mm_set1_ps(0x1p-100f));
+      const __m128 hi = _mm_add_ps(_mm_mul_ps(t, _mm_set1_ps(1.0f + 0x1p-20f)), _mm_set1_ps(0x1p-100f));
+      lower = _mm_or_ps(_mm_and_ps(rising, _mm_max_ps(lower, lo)), _mm_andnot_ps(rising, lower));
+      upper = _mm_or_ps(_mm_and_ps(falling, _mm_min_ps(upper, hi)), _mm_andnot_ps(falling, upper));
+    }
+  }
+  const __m128 disjoint = _mm_or_ps(reject, _mm_cmpgt_ps(lower, upper));
+  return ~static_cast<unsigned>(_mm_movemask_ps(disjoint)) & 0xFu;
+}
+#endif
+
+}  // namespace
+
+// The kinetic boxes of two lanes never meet (Method): on each axis, overlap at time t is two
+// linear constraints g(t) = (1 - t) g0 + t g1 >= 0 (hi_b - lo_a and hi_a - lo_b, the kinetic
+// boxes interpolating the boxes at the frames; ccd_kinetic_boxes.h). In single precision:
+//  - v0 = fl(g0): the floats' exact difference rounded once, |v0 - g0| <= 2^-24 |g0| (exact
+//    when it underflows); a = fl(v0 + m), m = fl(fl(2^-21 max(|v0|, |v1|)) + FLT_MIN), is at
+//    least g0: m >= 2^-21 max (1 - 2^-24) (the product can only lose 2^-150 to underflow, which
+//    FLT_MIN more than covers), and fl(v0 + m) >= v0 + m - 2^-24 |v0 + m|, so
+//    a >= v0 + 2^-21 |v0| (1 - 2^-24)^2 - 2^-24 |v0| >= g0. Likewise e >= g1. So the line
+//    through (0, a) and (1, e) lies above g on [0, 1]: where it is negative, so is g.
+//  - a < 0 and e < 0: g < 0 throughout, never overlapping. a < 0 <= e: overlap needs
+//    t >= t* = a / (a - e); computed t = t* (1 + d2) / (1 + d1) (a - e adds magnitudes, one
+//    rounding; the division one more), so fl(t (1 - 2^-20)) < t* when t is normal, and the
+//    final - 2^-100 makes the bound negative when t underflows (absolute error 2^-150).
+//    a >= 0 > e: t <= t*, bounded above by fl(t (1 + 2^-20)) + 2^-100 the same way.
+//  - disjoint when the largest lower bound exceeds the smallest upper bound (or a constraint
+//    is negative at both frames): no time in [0, 1] satisfies all six. A NaN or infinity
+//    (boxes near FLT_MAX, empty lanes) makes a comparison false, which never rejects.
+// The SSE2 and AVX-512 paths run the same operations lane by lane: the same mask.
+unsigned TriangleBvh::kinetic_lanes(const Frames& a, const Frames& b, bool wide) {
+#if TECIDO_BVH_AVX512
+  if (wide) return kinetic_mask16_avx512(&a.lo[0][0][0], &a.hi[0][0][0], &b.lo[0][0][0], &b.hi[0][0][0]);
+#else
+  (void)wide;
+#endif
+#if defined(__SSE2__)
+  unsigned m = 0;
+  for (int k = 0; k < kWidth; ++k) m |= kinetic_row_sse2(a.lo, a.hi, b.lo, b.hi, k) << (kWidth * k);
+  return m;
+#else
+  (void)a;
+  (void)b;
+  return 0xFFFFu;  // no single-precision test without SSE: every pair may meet
+#endif
+}
+
+unsigned TriangleBvh::moving_lanes(const Frames& a, const Frames& b, unsigned lanes, bool wide) {
+  // Boxes that overlap at a frame (exact comparisons) may meet: there the kinetic test would
+  // find every constraint nonnegative at that end, so run it only when some lane is left.
+  unsigned open = lanes;
+  for (int f = 0; f < 2 && open; ++f) {
+#if TECIDO_BVH_AVX512
+    if (wide) {
+      open &= ~box_mask16_avx512(a.lo[f][0], a.hi[f][0], b.lo[f][0], b.hi[f][0]);
+      continue;
+    }
+#endif
+    for (int k = 0; k < kWidth; ++k) {
+      const float lo[3] = {a.lo[f][0][k], a.lo[f][1][k], a.lo[f][2][k]};
+      const float hi[3] = {a.hi[f][0][k], a.hi[f][1][k], a.hi[f][2][k]};
+      open &= ~(lanes_overlapping(b.lo[f], b.hi[f], lo, hi) << (kWidth * k));
+    }
+  }
+  return open ? (lanes & ~open) | (open & kinetic_lanes(a, b, wide)) : lanes;
+}
+
+template <bool Kinetic>
 inline void TriangleBvh::leaf_pairs(int a, int b, bool wide, std::vector<std::array<int, 2>>& out) const {
   const Node& na = nodes_[a];
   const Node& nb = nodes_[b];
@@ -343,6 +500,7 @@ inline void TriangleBvh::leaf_pairs(int a, int b, bool wide, std::vector<std::ar
     }
   }
   if (a == b) mask &= kLaterLanes;
+  if (Kinetic && mask) mask &= moving_lanes(frames_[a], frames_[b], mask, wide);
   for (; mask; mask &= mask - 1) {
     const int bit = lowest_bit(mask);
     const int i = na.child[bit / kWidth], j = nb.child[bit % kWidth];
@@ -354,11 +512,16 @@ inline void TriangleBvh::leaf_pairs(int a, int b, bool wide, std::vector<std::ar
   }
 }
 
-void TriangleBvh::overlapping_pairs(std::vector<std::array<int, 2>>& out) {
+void TriangleBvh::overlapping_pairs(std::vector<std::array<int, 2>>& out) { pairs<false>(out); }
+
+void TriangleBvh::moving_pairs(std::vector<std::array<int, 2>>& out) { pairs<true>(out); }
+
+template <bool Kinetic>
+void TriangleBvh::pairs(std::vector<std::array<int, 2>>& out) {
   if (nodes_.empty()) return;
   const bool wide = use_wide_ && wide_kernel_available();
   if (nodes_[0].leaf) {
-    leaf_pairs(0, 0, wide, out);
+    leaf_pairs<Kinetic>(0, 0, wide, out);
     return;
   }
   // Node pairs still to visit are pairs of internal nodes, or a leaf with an internal node: a
@@ -405,12 +568,13 @@ void TriangleBvh::overlapping_pairs(std::vector<std::array<int, 2>>& out) {
           mask |= lanes_overlapping(nb, lo, hi) << (kWidth * k);
         }
       }
+      if (Kinetic && mask) mask &= moving_lanes(frames_[a], frames_[b], mask, wide);
       if (a == b) {
         mask &= kLaterLanes;
         for (int k = 0; k < na.count; ++k) {
           const int c = na.child[k];
           if ((na.leaf_kids >> k) & 1u) {
-            leaf_pairs(c, c, wide, out);
+            leaf_pairs<Kinetic>(c, c, wide, out);
           } else {
             stack[top++] = pack(c, c);
           }
@@ -420,7 +584,7 @@ void TriangleBvh::overlapping_pairs(std::vector<std::array<int, 2>>& out) {
         const int bit = lowest_bit(mask);
         const int k = bit / kWidth, l = bit % kWidth;
         if ((na.leaf_kids >> k) & (nb.leaf_kids >> l) & 1u) {
-          leaf_pairs(na.child[k], nb.child[l], wide, out);
+          leaf_pairs<Kinetic>(na.child[k], nb.child[l], wide, out);
         } else {
           stack[top++] = pack(na.child[k], nb.child[l]);
         }
@@ -431,7 +595,7 @@ void TriangleBvh::overlapping_pairs(std::vector<std::array<int, 2>>& out) {
       for (unsigned m = lanes_overlapping(nb, node_box_[a].lo, node_box_[a].hi); m; m &= m - 1) {
         const int l = lowest_bit(m);
         if ((nb.leaf_kids >> l) & 1u) {
-          leaf_pairs(a, nb.child[l], wide, out);
+          leaf_pairs<Kinetic>(a, nb.child[l], wide, out);
         } else {
           stack[top++] = pack(a, nb.child[l]);
         }
@@ -441,7 +605,7 @@ void TriangleBvh::overlapping_pairs(std::vector<std::array<int, 2>>& out) {
       for (unsigned m = lanes_overlapping(na, node_box_[b].lo, node_box_[b].hi); m; m &= m - 1) {
         const int k = lowest_bit(m);
         if ((na.leaf_kids >> k) & 1u) {
-          leaf_pairs(na.child[k], b, wide, out);
+          leaf_pairs<Kinetic>(na.child[k], b, wide, out);
         } else {
           stack[top++] = pack(na.child[k], b);
         }

@@ -108,11 +108,12 @@ struct Staged {
 
 /// Loads the points of queries q[0 .. n) into s (lanes n .. W repeat the last query).
 template <int W>
-TECIDO_BATCH_INLINE void stage(const double* x0, const double* x1, const std::array<int, 4>* q, int n, Staged<W>& s) {
+TECIDO_BATCH_INLINE void stage(const double* x0, const double* x1, std::size_t stride, const std::array<int, 4>* q,
+                               int n, Staged<W>& s) {
   for (int l = 0; l < W; ++l) {
     const std::array<int, 4>& qq = q[l < n ? l : n - 1];
     for (int pt = 0; pt < 4; ++pt) {
-      const std::size_t at = 3 * static_cast<std::size_t>(qq[pt]);
+      const std::size_t at = stride * static_cast<std::size_t>(qq[pt]);
       for (int c = 0; c < 3; ++c) {
         s.p[0][pt][c][l] = x0[at + c];
         s.p[1][pt][c][l] = x1[at + c];
@@ -256,14 +257,14 @@ TECIDO_BATCH_INLINE typename S::K cubic_miss(const Staged<S::kWidth>& s) {
 
 /// The verdicts of queries q[0 .. n) of kind K.
 template <class S, int K>
-TECIDO_BATCH_INLINE void run_blocks(const double* x0, const double* x1, const std::array<int, 4>* q, int n, bool cubic,
-                                    std::uint8_t* verdict) {
+TECIDO_BATCH_INLINE void run_blocks(const double* x0, const double* x1, std::size_t stride, const std::array<int, 4>* q,
+                                    int n, bool cubic, std::uint8_t* verdict) {
   constexpr int W = S::kWidth;
   Staged<W> s;
   PairBoxes<S> b;
   for (int k = 0; k < n; k += W) {
     const int lanes = std::min(W, n - k);
-    stage<W>(x0, x1, q + k, lanes, s);
+    stage<W>(x0, x1, stride, q + k, lanes, s);
     boxes_of<S, K>(s, b);
     unsigned disjoint = S::bits(swept_disjoint<S>(b));
     // The linear program only where some lane needs it (most neighbours overlap at a frame).
@@ -277,64 +278,24 @@ TECIDO_BATCH_INLINE void run_blocks(const double* x0, const double* x1, const st
   }
 }
 
-/// ccd_kinetic_boxes_disjoint on pairs of box records (a primitive's box at t = 0 then t = 1).
-template <class S>
-TECIDO_BATCH_INLINE void run_kinetic(const std::array<double, 12>* boxes, const std::array<int, 2>* pairs, int n,
-                                     std::uint8_t* disjoint) {
-  constexpr int W = S::kWidth;
-  alignas(64) double st[2][2][6][W];  // [primitive][frame][lo xyz, hi xyz][lane]
-  PairBoxes<S> b;
-  for (int k = 0; k < n; k += W) {
-    const int lanes = std::min(W, n - k);
-    for (int l = 0; l < W; ++l) {
-      const std::array<int, 2>& p = pairs[k + (l < lanes ? l : lanes - 1)];
-      for (int side = 0; side < 2; ++side)
-        for (int i = 0; i < 12; ++i) st[side][i / 6][i % 6][l] = boxes[p[side]][i];
-    }
-    for (int t = 0; t < 2; ++t) {
-      for (int c = 0; c < 3; ++c) {
-        b.alo[t][c] = S::load(st[0][t][c]);
-        b.ahi[t][c] = S::load(st[0][t][c + 3]);
-        b.blo[t][c] = S::load(st[1][t][c]);
-        b.bhi[t][c] = S::load(st[1][t][c + 3]);
-      }
-    }
-    const unsigned open = ~S::bits(overlap_at_a_frame<S>(b)) & ((1u << W) - 1);
-    const unsigned d = open ? open & S::bits(kinetic_program_infeasible<S>(b)) : 0u;
-    for (int l = 0; l < lanes; ++l) disjoint[k + l] = static_cast<std::uint8_t>((d >> l) & 1u);
-  }
-}
-
-using StagesKernel = void (*)(const double*, const double*, const std::array<int, 4>*, int, bool, std::uint8_t*);
-using KineticKernel = void (*)(const std::array<double, 12>*, const std::array<int, 2>*, int, std::uint8_t*);
+using StagesKernel = void (*)(const double*, const double*, std::size_t, const std::array<int, 4>*, int, bool,
+                              std::uint8_t*);
 
 template <class S, int K>
-void stages(const double* x0, const double* x1, const std::array<int, 4>* q, int n, bool cubic, std::uint8_t* out) {
-  run_blocks<S, K>(x0, x1, q, n, cubic, out);
-}
-template <class S>
-void kinetic(const std::array<double, 12>* boxes, const std::array<int, 2>* pairs, int n, std::uint8_t* out) {
-  run_kinetic<S>(boxes, pairs, n, out);
+void stages(const double* x0, const double* x1, std::size_t stride, const std::array<int, 4>* q, int n, bool cubic,
+            std::uint8_t* out) {
+  run_blocks<S, K>(x0, x1, stride, q, n, cubic, out);
 }
 #if TECIDO_BATCH_X86
 template <class S, int K>
-TECIDO_BATCH_TARGET_AVX void stages_avx(const double* x0, const double* x1, const std::array<int, 4>* q, int n,
-                                        bool cubic, std::uint8_t* out) {
-  run_blocks<S, K>(x0, x1, q, n, cubic, out);
-}
-template <class S>
-TECIDO_BATCH_TARGET_AVX void kinetic_avx(const std::array<double, 12>* boxes, const std::array<int, 2>* pairs, int n,
-                                         std::uint8_t* out) {
-  run_kinetic<S>(boxes, pairs, n, out);
+TECIDO_BATCH_TARGET_AVX void stages_avx(const double* x0, const double* x1, std::size_t stride,
+                                        const std::array<int, 4>* q, int n, bool cubic, std::uint8_t* out) {
+  run_blocks<S, K>(x0, x1, stride, q, n, cubic, out);
 }
 template <int K>
-TECIDO_BATCH_TARGET_AVX512 void stages_avx512(const double* x0, const double* x1, const std::array<int, 4>* q, int n,
-                                              bool cubic, std::uint8_t* out) {
-  run_blocks<Avx512Simd, K>(x0, x1, q, n, cubic, out);
-}
-TECIDO_BATCH_TARGET_AVX512 void kinetic_avx512(const std::array<double, 12>* boxes, const std::array<int, 2>* pairs,
-                                               int n, std::uint8_t* out) {
-  run_kinetic<Avx512Simd>(boxes, pairs, n, out);
+TECIDO_BATCH_TARGET_AVX512 void stages_avx512(const double* x0, const double* x1, std::size_t stride,
+                                              const std::array<int, 4>* q, int n, bool cubic, std::uint8_t* out) {
+  run_blocks<Avx512Simd, K>(x0, x1, stride, q, n, cubic, out);
 }
 #endif
 
@@ -356,8 +317,8 @@ int ccd_batch_widest() {
   return widest;
 }
 
-void ccd_batch_first_stages(CcdKind kind, const double* x0, const double* x1, const std::array<int, 4>* queries,
-                            int n, bool cubic, std::uint8_t* verdict, int width) {
+void ccd_batch_first_stages(CcdKind kind, const double* x0, const double* x1, std::size_t stride,
+                            const std::array<int, 4>* queries, int n, bool cubic, std::uint8_t* verdict, int width) {
   if (n <= 0) return;
   if (width == 0) width = ccd_batch_widest();
   const bool vf = kind == CcdKind::VertexFace;
@@ -366,19 +327,7 @@ void ccd_batch_first_stages(CcdKind kind, const double* x0, const double* x1, co
   if (width == 4) k = vf ? &stages_avx<VecSimd<4>, 0> : &stages_avx<VecSimd<4>, 1>;
   if (width == 8) k = vf ? &stages_avx512<0> : &stages_avx512<1>;
 #endif
-  k(x0, x1, queries, n, cubic, verdict);
-}
-
-void ccd_batch_kinetic_boxes(const std::array<double, 12>* boxes, const std::array<int, 2>* pairs, int n,
-                             std::uint8_t* disjoint, int width) {
-  if (n <= 0) return;
-  if (width == 0) width = ccd_batch_widest();
-  KineticKernel k = &kinetic<VecSimd<2>>;
-#if TECIDO_BATCH_X86
-  if (width == 4) k = &kinetic_avx<VecSimd<4>>;
-  if (width == 8) k = &kinetic_avx512;
-#endif
-  k(boxes, pairs, n, disjoint);
+  k(x0, x1, stride, queries, n, cubic, verdict);
 }
 
 }  // namespace tecido

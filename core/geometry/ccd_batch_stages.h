@@ -2,8 +2,7 @@
 /// The first stages of core's continuous collision test (ccd.h: swept boxes, kinetic boxes, the
 /// coplanarity cubic on [0, 1]) decided for many queries at once, several per SIMD register, for
 /// a caller that holds the queries as point indices into two position arrays (a mesh's frames:
-/// continuous self-collision, core/cloth/continuous_self_collision.h); and the kinetic test
-/// alone on many pairs of boxes (its broad phase's triangle pairs).
+/// continuous self-collision, core/cloth/continuous_self_collision.h).
 ///
 /// Each decision is the one ccd's own stage takes on the same query, computed by the same
 /// operations on the same doubles in the same order, lane by lane (IEEE-754 round-to-nearest,
@@ -30,6 +29,7 @@
 #include "core/geometry/ccd_query.h"
 
 #include <array>
+#include <cstddef>
 #include <cstdint>
 
 namespace tecido {
@@ -44,18 +44,12 @@ enum CcdBatchVerdict : std::uint8_t {
 int ccd_batch_widest();
 bool ccd_batch_width_available(int width);
 
-/// For each of the n queries (points queries[k][0..3] in the order of ccd_query.h, indices
-/// into x0 and x1, packed x, y, z doubles at t = 0 and t = 1), the verdict bits above into
-/// verdict[k]; the cubic is evaluated only when `cubic` is true. Finite positions. width 0:
-/// the widest available; otherwise one of 2, 4, 8 that is available.
-void ccd_batch_first_stages(CcdKind kind, const double* x0, const double* x1, const std::array<int, 4>* queries,
-                            int n, bool cubic, std::uint8_t* verdict, int width = 0);
-
-/// ccd_kinetic_boxes_disjoint(a0, a1, b0, b1) for each of the n pairs: boxes[i] is a
-/// primitive's box at t = 0 then at t = 1 (lo xyz, hi xyz each), pair k is the primitives
-/// pairs[k][0] (a) and pairs[k][1] (b); disjoint[k] is 1 when the test answers true, else 0.
-/// Finite boxes. width as above.
-void ccd_batch_kinetic_boxes(const std::array<double, 12>* boxes, const std::array<int, 2>* pairs, int n, std::uint8_t* disjoint,
-                             int width = 0);
+/// For each of the n queries (points queries[k][0..3] in the order of ccd_query.h), the
+/// verdict bits above into verdict[k]; the cubic is evaluated only when `cubic` is true. Point
+/// p is x0[stride p + c] at t = 0 and x1[stride p + c] at t = 1 (c = 0, 1, 2: x, y, z): stride
+/// 3 for two arrays of Vec3, or both frames interleaved in one array. Finite positions.
+/// width 0: the widest available; otherwise one of 2, 4, 8 that is available.
+void ccd_batch_first_stages(CcdKind kind, const double* x0, const double* x1, std::size_t stride,
+                            const std::array<int, 4>* queries, int n, bool cubic, std::uint8_t* verdict, int width = 0);
 
 }  // namespace tecido

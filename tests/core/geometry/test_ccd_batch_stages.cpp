@@ -201,64 +201,14 @@ TEST(CcdBatchStages, DecidesAsCcdsOwnStagesAtEveryWidth) {
       // Odd counts and offsets: partial blocks.
       for (int first : {0, 3}) {
         std::vector<std::uint8_t> got(n, 0xFF);
-        ccd_batch_first_stages(kind, x0, x1, b.points.data() + first, n - first, true, got.data(), w);
+        ccd_batch_first_stages(kind, x0, x1, 3, b.points.data() + first, n - first, true, got.data(), w);
         for (int k = first; k < n; ++k)
           ASSERT_EQ(got[k - first], expected[k]) << ccd_kind_name(kind) << " width " << w << " query " << k;
       }
       std::vector<std::uint8_t> boxes_only(n);
-      ccd_batch_first_stages(kind, x0, x1, b.points.data(), n, false, boxes_only.data(), w);
+      ccd_batch_first_stages(kind, x0, x1, 3, b.points.data(), n, false, boxes_only.data(), w);
       for (int k = 0; k < n; ++k) ASSERT_EQ(boxes_only[k], expected[k] & kCcdBoxesDisjoint) << "width " << w;
     }
-  }
-}
-
-TEST(CcdBatchStages, KineticBoxesAsTheScalarTestAtEveryWidth) {
-  // Boxes moving in every way: crossing, passing, touching at a frame (dyadic, exact), one
-  // inside the other, degenerate (points), far apart, at scales 1e-30..1e30.
-  std::mt19937_64 rng(77);
-  std::uniform_real_distribution<double> u(0.0, 1.0);
-  std::vector<std::array<double, 12>> boxes;
-  for (int i = 0; i < 3000; ++i) {
-    std::array<double, 12> b;
-    const double scale = std::pow(10.0, 10 * ((i / 100) % 7) - 30);  // groups of 100 share a scale
-    for (int t = 0; t < 2; ++t) {
-      for (int c = 0; c < 3; ++c) {
-        const bool dyadic = i % 3 == 0;
-        double lo = dyadic ? std::floor(u(rng) * 8) / 8 : u(rng);
-        double ext = i % 5 == 0 ? 0.0 : (dyadic ? std::floor(u(rng) * 4) / 8 : 0.3 * u(rng));
-        b[6 * t + c] = scale * lo;
-        b[6 * t + c + 3] = scale * (lo + ext);
-      }
-    }
-    boxes.push_back(b);
-  }
-  std::vector<std::array<int, 2>> pairs;
-  for (int i = 0; i < 20000; ++i) {
-    const int a = static_cast<int>(u(rng) * boxes.size());
-    const int b = i % 10 == 0 ? static_cast<int>(u(rng) * boxes.size()) : a / 100 * 100 + static_cast<int>(u(rng) * 100);
-    pairs.push_back({a, b});
-  }
-  for (int i = 0; i + 1 < static_cast<int>(boxes.size()); ++i) pairs.push_back({i, i + 1});
-  const int n = static_cast<int>(pairs.size());
-  std::vector<std::uint8_t> expected(n);
-  int disjoint = 0;
-  for (int k = 0; k < n; ++k) {
-    const auto& a = boxes[pairs[k][0]];
-    const auto& b = boxes[pairs[k][1]];
-    CcdBox a0, a1, b0, b1;
-    std::copy(a.begin(), a.begin() + 6, a0);
-    std::copy(a.begin() + 6, a.end(), a1);
-    std::copy(b.begin(), b.begin() + 6, b0);
-    std::copy(b.begin() + 6, b.end(), b1);
-    expected[k] = ccd_kinetic_boxes_disjoint(a0, a1, b0, b1) ? 1 : 0;
-    disjoint += expected[k];
-  }
-  EXPECT_GT(disjoint, n / 10);
-  EXPECT_LT(disjoint, n - n / 10);
-  for (int w : widths()) {
-    std::vector<std::uint8_t> got(n, 0xFF);
-    ccd_batch_kinetic_boxes(boxes.data(), pairs.data(), n, got.data(), w);
-    for (int k = 0; k < n; ++k) ASSERT_EQ(got[k], expected[k]) << "width " << w << " pair " << k;
   }
 }
 
