@@ -106,7 +106,7 @@ struct Staged {
   alignas(64) double p[2][4][3][W];
 };
 
-/// Loads the points of queries q[0 .. n) into s (lanes n .. W repeat the last query).
+/// Writes the points of queries q[0 .. n) into s (lanes n .. W repeat the last query).
 template <int W>
 TECIDO_BATCH_INLINE void stage(const double* x0, const double* x1, std::size_t stride, const std::array<int, 4>* q,
                                int n, Staged<W>& s) {
@@ -260,11 +260,16 @@ template <class S, int K>
 TECIDO_BATCH_INLINE void run_blocks(const double* x0, const double* x1, std::size_t stride, const std::array<int, 4>* q,
                                     int n, bool cubic, std::uint8_t* verdict) {
   constexpr int W = S::kWidth;
-  Staged<W> s;
+  // Double-buffered: the next block's points are written while this block's, written one
+  // block earlier, are read back as vectors (a wide load of fresh narrow stores would wait
+  // for them to leave the store buffer).
+  Staged<W> staged[2];
   PairBoxes<S> b;
-  for (int k = 0; k < n; k += W) {
+  stage<W>(x0, x1, stride, q, std::min(W, n), staged[0]);
+  for (int k = 0, buf = 0; k < n; k += W, buf ^= 1) {
     const int lanes = std::min(W, n - k);
-    stage<W>(x0, x1, stride, q + k, lanes, s);
+    if (k + W < n) stage<W>(x0, x1, stride, q + k + W, std::min(W, n - k - W), staged[buf ^ 1]);
+    const Staged<W>& s = staged[buf];
     boxes_of<S, K>(s, b);
     unsigned disjoint = S::bits(swept_disjoint<S>(b));
     // The linear program only where some lane needs it (most neighbours overlap at a frame).
