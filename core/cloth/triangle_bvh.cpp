@@ -340,24 +340,19 @@ void TriangleBvh::refit_from_vertex_bounds() {
 }
 
 unsigned TriangleBvh::lanes_overlapping(const Node& b, const float lo[3], const float hi[3]) {
-  return lanes_overlapping(b.lo, b.hi, lo, hi);
-}
-
-unsigned TriangleBvh::lanes_overlapping(const float (&blo)[3][kWidth], const float (&bhi)[3][kWidth], const float lo[3],
-                                        const float hi[3]) {
 #if defined(__SSE2__)
-  __m128 m = _mm_and_ps(_mm_cmple_ps(_mm_loadu_ps(blo[0]), _mm_set1_ps(hi[0])),
-                        _mm_cmple_ps(_mm_set1_ps(lo[0]), _mm_loadu_ps(bhi[0])));
-  m = _mm_and_ps(m, _mm_cmple_ps(_mm_loadu_ps(blo[1]), _mm_set1_ps(hi[1])));
-  m = _mm_and_ps(m, _mm_cmple_ps(_mm_set1_ps(lo[1]), _mm_loadu_ps(bhi[1])));
-  m = _mm_and_ps(m, _mm_cmple_ps(_mm_loadu_ps(blo[2]), _mm_set1_ps(hi[2])));
-  m = _mm_and_ps(m, _mm_cmple_ps(_mm_set1_ps(lo[2]), _mm_loadu_ps(bhi[2])));
+  __m128 m = _mm_and_ps(_mm_cmple_ps(_mm_loadu_ps(b.lo[0]), _mm_set1_ps(hi[0])),
+                        _mm_cmple_ps(_mm_set1_ps(lo[0]), _mm_loadu_ps(b.hi[0])));
+  m = _mm_and_ps(m, _mm_cmple_ps(_mm_loadu_ps(b.lo[1]), _mm_set1_ps(hi[1])));
+  m = _mm_and_ps(m, _mm_cmple_ps(_mm_set1_ps(lo[1]), _mm_loadu_ps(b.hi[1])));
+  m = _mm_and_ps(m, _mm_cmple_ps(_mm_loadu_ps(b.lo[2]), _mm_set1_ps(hi[2])));
+  m = _mm_and_ps(m, _mm_cmple_ps(_mm_set1_ps(lo[2]), _mm_loadu_ps(b.hi[2])));
   return static_cast<unsigned>(_mm_movemask_ps(m));
 #else
   unsigned m = 0;
   for (int k = 0; k < kWidth; ++k) {
-    const bool o = (blo[0][k] <= hi[0]) & (lo[0] <= bhi[0][k]) & (blo[1][k] <= hi[1]) & (lo[1] <= bhi[1][k]) &
-                   (blo[2][k] <= hi[2]) & (lo[2] <= bhi[2][k]);
+    const bool o = (b.lo[0][k] <= hi[0]) & (lo[0] <= b.hi[0][k]) & (b.lo[1][k] <= hi[1]) & (lo[1] <= b.hi[1][k]) &
+                   (b.lo[2][k] <= hi[2]) & (lo[2] <= b.hi[2][k]);
     m |= static_cast<unsigned>(o) << k;
   }
   return m;
@@ -457,24 +452,20 @@ unsigned TriangleBvh::kinetic_lanes(const Frames& a, const Frames& b, bool wide)
 #endif
 }
 
-unsigned TriangleBvh::moving_lanes(const Frames& a, const Frames& b, unsigned lanes, bool wide) {
-  // Boxes that overlap at a frame (exact comparisons) may meet: there the kinetic test would
-  // find every constraint nonnegative at that end, so run it only when some lane is left.
-  unsigned open = lanes;
-  for (int f = 0; f < 2 && open; ++f) {
+unsigned TriangleBvh::kinetic_if_apart(const Frames& a, const Frames& b, unsigned lanes, bool wide) {
+  // Lanes whose boxes overlap at a frame are kept by kinetic_lanes too (every constraint is
+  // nonnegative at that end: no bound on t from the other), so when no lane of `lanes` is
+  // apart at both frames the answer is `lanes` without it. A speed choice of the wide path
+  // (two 16-lane compares); the mask is the same either way.
+  unsigned apart = lanes;
 #if TECIDO_BVH_AVX512
-    if (wide) {
-      open &= ~box_mask16_avx512(a.lo[f][0], a.hi[f][0], b.lo[f][0], b.hi[f][0]);
-      continue;
-    }
-#endif
-    for (int k = 0; k < kWidth; ++k) {
-      const float lo[3] = {a.lo[f][0][k], a.lo[f][1][k], a.lo[f][2][k]};
-      const float hi[3] = {a.hi[f][0][k], a.hi[f][1][k], a.hi[f][2][k]};
-      open &= ~(lanes_overlapping(b.lo[f], b.hi[f], lo, hi) << (kWidth * k));
-    }
+  if (wide) {
+    apart &= ~box_mask16_avx512(a.lo[0][0], a.hi[0][0], b.lo[0][0], b.hi[0][0]);
+    apart &= ~box_mask16_avx512(a.lo[1][0], a.hi[1][0], b.lo[1][0], b.hi[1][0]);
+    return apart ? (lanes & ~apart) | (apart & kinetic_lanes(a, b, wide)) : lanes;
   }
-  return open ? (lanes & ~open) | (open & kinetic_lanes(a, b, wide)) : lanes;
+#endif
+  return lanes & kinetic_lanes(a, b, wide);
 }
 
 template <bool Kinetic>
@@ -500,7 +491,7 @@ inline void TriangleBvh::leaf_pairs(int a, int b, bool wide, std::vector<std::ar
     }
   }
   if (a == b) mask &= kLaterLanes;
-  if (Kinetic && mask) mask &= moving_lanes(frames_[a], frames_[b], mask, wide);
+  if (Kinetic && mask) mask &= kinetic_lanes(frames_[a], frames_[b], wide);
   for (; mask; mask &= mask - 1) {
     const int bit = lowest_bit(mask);
     const int i = na.child[bit / kWidth], j = nb.child[bit % kWidth];
@@ -568,7 +559,7 @@ void TriangleBvh::pairs(std::vector<std::array<int, 2>>& out) {
           mask |= lanes_overlapping(nb, lo, hi) << (kWidth * k);
         }
       }
-      if (Kinetic && mask) mask &= moving_lanes(frames_[a], frames_[b], mask, wide);
+      if (Kinetic && mask) mask &= kinetic_if_apart(frames_[a], frames_[b], mask, wide);
       if (a == b) {
         mask &= kLaterLanes;
         for (int k = 0; k < na.count; ++k) {

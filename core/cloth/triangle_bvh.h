@@ -58,8 +58,9 @@ class TriangleBvh {
   /// After the two-frame refit: the pairs of overlapping_pairs() less those whose kinetic
   /// boxes never meet (the boxes at t = 0 and t = 1 interpolated in time, as in
   /// core/geometry/ccd_kinetic_boxes.h; each triangle lies in its kinetic box at every time,
-  /// so such a pair cannot touch), decided for the pairs of two leaves by a certified test in
-  /// single precision (kinetic_lanes in triangle_bvh.cpp). In the same order.
+  /// so such a pair cannot touch), decided by a certified test in single precision
+  /// (kinetic_lanes in triangle_bvh.cpp) on the lanes of leaf pairs and of internal node
+  /// pairs (a node's boxes at each frame contain its triangles'). In the same order.
   void moving_pairs(std::vector<std::array<int, 2>>& out);
 
   /// The leaf and node-pair masks use one 16-lane AVX-512 pass when the CPU has AVX-512F
@@ -106,13 +107,11 @@ class TriangleBvh {
   void leaf_pairs(int a, int b, bool wide, std::vector<std::array<int, 2>>& out) const;
   /// Bit 4k + l set when the kinetic boxes of lane k of a and lane l of b may meet.
   static unsigned kinetic_lanes(const Frames& a, const Frames& b, bool wide);
-  /// The lanes of `lanes` (bits as above) whose kinetic boxes may meet: those overlapping at a
-  /// frame, and those kinetic_lanes keeps (the same mask as lanes & kinetic_lanes, cheaper).
-  static unsigned moving_lanes(const Frames& a, const Frames& b, unsigned lanes, bool wide);
+  /// lanes & kinetic_lanes(a, b), skipping the kinetic test when no lane is apart at both
+  /// frames (internal node pairs, where most overlap at a frame).
+  static unsigned kinetic_if_apart(const Frames& a, const Frames& b, unsigned lanes, bool wide);
   /// Bit k set when lane k of node b overlaps box (lo, hi).
   static unsigned lanes_overlapping(const Node& b, const float lo[3], const float hi[3]);
-  static unsigned lanes_overlapping(const float (&blo)[3][kWidth], const float (&bhi)[3][kWidth], const float lo[3],
-                                    const float hi[3]);
   /// Bit k set when triangle (v0, v1, v2) shares a vertex with lane k's triangle of leaf b.
   static unsigned lanes_sharing(const LeafVerts& b, int v0, int v1, int v2);
   /// Box refit from the per-vertex bounds vlo_, vhi_.
