@@ -246,60 +246,64 @@ void TriangleBvh::refit(const std::vector<Vec3>& x) {
 void TriangleBvh::refit(const std::vector<Vec3>& x0, const std::vector<Vec3>& x1) {
   if (nodes_.empty()) return;
   const std::size_t nv = x0.size();
-  vlo_.resize(nv);
-  vhi_.resize(nv);
-  for (int f = 0; f < 2; ++f) {
-    flo_[f].resize(nv);
-    fhi_[f].resize(nv);
-  }
+  fbounds_.resize(nv);
   for (std::size_t v = 0; v < nv; ++v) {
+    FrameBounds& b = fbounds_[v];
     for (int d = 0; d < 3; ++d) {
-      flo_[0][v][d] = float_down(x0[v][d]);
-      fhi_[0][v][d] = float_up(x0[v][d]);
-      flo_[1][v][d] = float_down(x1[v][d]);
-      fhi_[1][v][d] = float_up(x1[v][d]);
-      // float_down / float_up are monotone: the bounds of the min / max are the min / max of
-      // the bounds, so this is the outward box of both frames.
-      vlo_[v][d] = std::min(flo_[0][v][d], flo_[1][v][d]);
-      vhi_[v][d] = std::max(fhi_[0][v][d], fhi_[1][v][d]);
+      b.lo[0][d] = float_down(x0[v][d]);
+      b.hi[0][d] = float_up(x0[v][d]);
+      b.lo[1][d] = float_down(x1[v][d]);
+      b.hi[1][d] = float_up(x1[v][d]);
     }
-    vlo_[v][3] = vhi_[v][3] = 0.0f;
-    for (int f = 0; f < 2; ++f) flo_[f][v][3] = fhi_[f][v][3] = 0.0f;
+    b.lo[0][3] = b.hi[0][3] = b.lo[1][3] = b.hi[1][3] = 0.0f;
   }
-  refit_from_vertex_bounds();
   refit_frames();
 }
 
 void TriangleBvh::refit_frames() {
+  // One bottom-up sweep: each lane's boxes at both frames, and its swept box (their union:
+  // float_down and float_up are monotone, so this is the outward box of both frames).
   frames_.resize(nodes_.size());
   for (int f = 0; f < 2; ++f) frame_box_[f].resize(nodes_.size());
   for (std::size_t k = nodes_.size(); k-- > 0;) {
-    const Node& nd = nodes_[k];
+    Node& nd = nodes_[k];
     Frames& fr = frames_[k];
-    for (int f = 0; f < 2; ++f) {
-      for (int lane = 0; lane < kWidth; ++lane) {
-        for (int d = 0; d < 3; ++d) {
-          fr.lo[f][d][lane] = kInf;  // empty lanes: inverted, as the node's own
-          fr.hi[f][d][lane] = -kInf;
-        }
-        if (lane >= nd.count) continue;
-        for (int d = 0; d < 3; ++d) {
-          if (nd.leaf) {
-            const LeafVerts& lv = nd.lv;
-            const int a = lv.v[0][lane], b = lv.v[1][lane], c = lv.v[2][lane];
-            fr.lo[f][d][lane] = std::min(flo_[f][a][d], std::min(flo_[f][b][d], flo_[f][c][d]));
-            fr.hi[f][d][lane] = std::max(fhi_[f][a][d], std::max(fhi_[f][b][d], fhi_[f][c][d]));
-          } else {
-            fr.lo[f][d][lane] = frame_box_[f][nd.child[lane]].lo[d];
-            fr.hi[f][d][lane] = frame_box_[f][nd.child[lane]].hi[d];
+    for (int lane = 0; lane < kWidth; ++lane) {
+      float lo[2][4] = {{kInf, kInf, kInf, kInf}, {kInf, kInf, kInf, kInf}};  // empty lanes: inverted
+      float hi[2][4] = {{-kInf, -kInf, -kInf, -kInf}, {-kInf, -kInf, -kInf, -kInf}};
+      if (lane < nd.count) {
+        for (int f = 0; f < 2; ++f) {
+          for (int d = 0; d < 3; ++d) {
+            if (nd.leaf) {
+              const FrameBounds& a = fbounds_[nd.lv.v[0][lane]];
+              const FrameBounds& b = fbounds_[nd.lv.v[1][lane]];
+              const FrameBounds& c = fbounds_[nd.lv.v[2][lane]];
+              lo[f][d] = std::min(a.lo[f][d], std::min(b.lo[f][d], c.lo[f][d]));
+              hi[f][d] = std::max(a.hi[f][d], std::max(b.hi[f][d], c.hi[f][d]));
+            } else {
+              lo[f][d] = frame_box_[f][nd.child[lane]].lo[d];
+              hi[f][d] = frame_box_[f][nd.child[lane]].hi[d];
+            }
           }
         }
       }
-      Box& box = frame_box_[f][k];
       for (int d = 0; d < 3; ++d) {
+        for (int f = 0; f < 2; ++f) {
+          fr.lo[f][d][lane] = lo[f][d];
+          fr.hi[f][d][lane] = hi[f][d];
+        }
+        nd.lo[d][lane] = std::min(lo[0][d], lo[1][d]);
+        nd.hi[d][lane] = std::max(hi[0][d], hi[1][d]);
+      }
+    }
+    for (int d = 0; d < 3; ++d) {
+      for (int f = 0; f < 2; ++f) {
+        Box& box = frame_box_[f][k];
         box.lo[d] = std::min(std::min(fr.lo[f][d][0], fr.lo[f][d][1]), std::min(fr.lo[f][d][2], fr.lo[f][d][3]));
         box.hi[d] = std::max(std::max(fr.hi[f][d][0], fr.hi[f][d][1]), std::max(fr.hi[f][d][2], fr.hi[f][d][3]));
       }
+      node_box_[k].lo[d] = std::min(frame_box_[0][k].lo[d], frame_box_[1][k].lo[d]);
+      node_box_[k].hi[d] = std::max(frame_box_[0][k].hi[d], frame_box_[1][k].hi[d]);
     }
   }
 }

@@ -116,14 +116,19 @@ class TriangleBvh {
   static unsigned lanes_sharing(const LeafVerts& b, int v0, int v1, int v2);
   /// Box refit from the per-vertex bounds vlo_, vhi_.
   void refit_from_vertex_bounds();
-  /// The frames' boxes from the per-vertex bounds of each frame, flo_, fhi_.
+  /// Every node's lanes at both frames (frames_) and swept (the nodes' own lo, hi), from the
+  /// per-vertex bounds of each frame, fbounds_.
   void refit_frames();
 
   std::size_t tri_count_ = 0;
   std::vector<Node> nodes_;          ///< nodes_[0] is the root; children after their parent
   std::vector<Box> node_box_;        ///< each node's own box
   std::vector<std::array<float, 4>> vlo_, vhi_;  ///< per-vertex outward float bounds
-  std::vector<std::array<float, 4>> flo_[2], fhi_[2];  ///< the same per frame (two-frame refit)
+  /// A vertex's outward float bounds at each frame (two-frame refit): lo[frame][axis], pad 0.
+  struct alignas(32) FrameBounds {
+    float lo[2][4], hi[2][4];
+  };
+  std::vector<FrameBounds> fbounds_;
   std::vector<Frames> frames_;                     ///< per node (two-frame refit)
   std::vector<Box> frame_box_[2];                  ///< each node's own box per frame
   std::vector<std::uint64_t> stack_;  ///< node pairs still to visit, packed (a | b << 32)
