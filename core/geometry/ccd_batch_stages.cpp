@@ -43,6 +43,7 @@ struct VecTypes {
 template <int W>
 struct VecSimd {
   static constexpr int kWidth = W;
+  static constexpr bool kTransposes = false;
   using V = typename VecTypes<W>::V;
   using K = typename VecTypes<W>::K;
   static TECIDO_BATCH_INLINE V load(const double* p) {
@@ -72,6 +73,7 @@ struct VecSimd {
 /// Lane operations on AVX-512F registers of 8 doubles; masks are 8-bit mask registers.
 struct Avx512Simd {
   static constexpr int kWidth = 8;
+  static constexpr bool kTransposes = true;
   typedef __m512d V;
   typedef __mmask8 K;
   static TECIDO_BATCH_AVX512_INLINE V load(const double* p) { return _mm512_loadu_pd(p); }
@@ -87,6 +89,34 @@ struct Avx512Simd {
   static TECIDO_BATCH_AVX512_INLINE K kor(K a, K b) { return static_cast<K>(a | b); }
   static TECIDO_BATCH_AVX512_INLINE K knot(K a) { return static_cast<K>(~a); }
   static TECIDO_BATCH_AVX512_INLINE unsigned bits(K k) { return k; }
+  /// The points of up to eight queries (lanes n .. 8 repeat the last) from 64-byte vertex
+  /// records x0 x y z, x1 x y z, pad, pad: one load per point and lane, then an 8 x 8
+  /// transpose in registers (unpack, then two rounds of 128-bit block shuffles), instead of
+  /// scalar stores read back as vectors. Pure data movement: the same values. (The maskz_
+  /// forms with a full mask: GCC 12's plain forms trip -Wmaybe-uninitialized.)
+  template <class P>
+  static TECIDO_BATCH_AVX512_INLINE void load_records(const double* base, const std::array<int, 4>* q, int n, P& out) {
+    for (int pt = 0; pt < 4; ++pt) {
+      V r[8];
+      for (int l = 0; l < 8; ++l) r[l] = _mm512_loadu_pd(base + 8 * static_cast<std::size_t>(q[l < n ? l : n - 1][pt]));
+      V even[4], odd[4];  // even[k]: columns 0 2 4 6 of rows 2k, 2k + 1 interleaved; odd: 1 3 5 7
+      for (int k = 0; k < 4; ++k) {
+        even[k] = _mm512_maskz_unpacklo_pd(0xFF, r[2 * k], r[2 * k + 1]);
+        odd[k] = _mm512_maskz_unpackhi_pd(0xFF, r[2 * k], r[2 * k + 1]);
+      }
+      // Rows 0-3 and 4-7 of columns {0, 4} and {2, 6} (even), {1, 5} and {3, 7} (odd).
+      const V e04a = _mm512_maskz_shuffle_f64x2(0xFF, even[0], even[1], 0x88), e26a = _mm512_maskz_shuffle_f64x2(0xFF, even[0], even[1], 0xDD);
+      const V e04b = _mm512_maskz_shuffle_f64x2(0xFF, even[2], even[3], 0x88), e26b = _mm512_maskz_shuffle_f64x2(0xFF, even[2], even[3], 0xDD);
+      const V o15a = _mm512_maskz_shuffle_f64x2(0xFF, odd[0], odd[1], 0x88), o37a = _mm512_maskz_shuffle_f64x2(0xFF, odd[0], odd[1], 0xDD);
+      const V o15b = _mm512_maskz_shuffle_f64x2(0xFF, odd[2], odd[3], 0x88), o37b = _mm512_maskz_shuffle_f64x2(0xFF, odd[2], odd[3], 0xDD);
+      out.p[0][pt][0] = _mm512_maskz_shuffle_f64x2(0xFF, e04a, e04b, 0x88);  // column 0: x0.x
+      out.p[1][pt][1] = _mm512_maskz_shuffle_f64x2(0xFF, e04a, e04b, 0xDD);  // column 4: x1.y
+      out.p[0][pt][2] = _mm512_maskz_shuffle_f64x2(0xFF, e26a, e26b, 0x88);  // column 2: x0.z
+      out.p[0][pt][1] = _mm512_maskz_shuffle_f64x2(0xFF, o15a, o15b, 0x88);  // column 1: x0.y
+      out.p[1][pt][2] = _mm512_maskz_shuffle_f64x2(0xFF, o15a, o15b, 0xDD);  // column 5: x1.z
+      out.p[1][pt][0] = _mm512_maskz_shuffle_f64x2(0xFF, o37a, o37b, 0x88);  // column 3: x1.x
+    }
+  }
 };
 #endif
 
@@ -122,6 +152,19 @@ TECIDO_BATCH_INLINE void stage(const double* x0, const double* x1, std::size_t s
   }
 }
 
+/// The points of one block in registers: p[time][point][coordinate], one lane per query.
+template <class S>
+struct Points {
+  typename S::V p[2][4][3];
+};
+
+template <class S>
+TECIDO_BATCH_INLINE void load_staged(const Staged<S::kWidth>& s, Points<S>& out) {
+  for (int t = 0; t < 2; ++t)
+    for (int pt = 0; pt < 4; ++pt)
+      for (int c = 0; c < 3; ++c) out.p[t][pt][c] = S::load(s.p[t][pt][c]);
+}
+
 /// Boxes of two primitives at both frames: lo[frame][coordinate], hi likewise, per lane.
 template <class S>
 struct PairBoxes {
@@ -131,11 +174,11 @@ struct PairBoxes {
 /// The primitives' boxes of one block (ccd_pipeline.cpp's box_of: exact minima and maxima).
 /// Kind K: 0 vertex-face (first primitive: point 0), 1 edge-edge (points 0 and 1).
 template <class S, int K>
-TECIDO_BATCH_INLINE void boxes_of(const Staged<S::kWidth>& s, PairBoxes<S>& b) {
+TECIDO_BATCH_INLINE void boxes_of(const Points<S>& s, PairBoxes<S>& b) {
   for (int t = 0; t < 2; ++t) {
     for (int c = 0; c < 3; ++c) {
-      const auto p0 = S::load(s.p[t][0][c]), p1 = S::load(s.p[t][1][c]);
-      const auto p2 = S::load(s.p[t][2][c]), p3 = S::load(s.p[t][3][c]);
+      const auto p0 = s.p[t][0][c], p1 = s.p[t][1][c];
+      const auto p2 = s.p[t][2][c], p3 = s.p[t][3][c];
       if (K == 0) {
         b.alo[t][c] = b.ahi[t][c] = p0;
         b.blo[t][c] = vmin<S>(p1, vmin<S>(p2, p3));
@@ -222,7 +265,7 @@ TECIDO_BATCH_INLINE typename S::V dot(const V3<S>& a, const V3<S>& b) {
 /// The cubic's verdict (ccd_system.h's differences, ccd_coplanarity_cubic.cpp's coefficients
 /// and cheap bound, ccd_bernstein.h's certified sign), where ccd's scale is 1.
 template <class S, int K>
-TECIDO_BATCH_INLINE typename S::K cubic_miss(const Staged<S::kWidth>& s) {
+TECIDO_BATCH_INLINE typename S::K cubic_miss(const Points<S>& s) {
   using V = typename S::V;
   // Difference vectors X, Y, Z as (minuend, subtrahend) points (ccd_system.cpp's kPairs).
   constexpr int kPairs[2][3][2] = {{{2, 1}, {3, 1}, {0, 1}}, {{1, 0}, {2, 3}, {2, 0}}};
@@ -233,7 +276,7 @@ TECIDO_BATCH_INLINE typename S::K cubic_miss(const Staged<S::kWidth>& s) {
     for (int t = 0; t < 2; ++t) {
       V e[3];
       for (int c = 0; c < 3; ++c) {
-        e[c] = S::load(s.p[t][kPairs[K][v][0]][c]) - S::load(s.p[t][kPairs[K][v][1]][c]);
+        e[c] = s.p[t][kPairs[K][v][0]][c] - s.p[t][kPairs[K][v][1]][c];
         m[v] = vmax<S>(m[v], S::abs(e[c]));
       }
       d[t][v] = {e[0], e[1], e[2]};
@@ -255,31 +298,49 @@ TECIDO_BATCH_INLINE typename S::K cubic_miss(const Staged<S::kWidth>& s) {
   return S::kand(unscaled, S::kor(S::lt(e0, lo), S::lt(hi, S::set1(0.0) - e0)));
 }
 
+/// The verdicts of one block of queries (lanes valid of them).
+template <class S, int K>
+TECIDO_BATCH_INLINE void decide_block(const Points<S>& s, int lanes, bool cubic, std::uint8_t* verdict) {
+  constexpr int W = S::kWidth;
+  PairBoxes<S> b;
+  boxes_of<S, K>(s, b);
+  unsigned disjoint = S::bits(swept_disjoint<S>(b));
+  // The linear program only where some lane needs it (most neighbours overlap at a frame).
+  const unsigned open = ~disjoint & ~S::bits(overlap_at_a_frame<S>(b)) & ((1u << W) - 1);
+  if (open) disjoint |= open & S::bits(kinetic_program_infeasible<S>(b));
+  const unsigned open_lanes = ~disjoint & ((1u << lanes) - 1);
+  const unsigned miss = cubic && open_lanes ? open_lanes & S::bits(cubic_miss<S, K>(s)) : 0u;
+  for (int l = 0; l < lanes; ++l)
+    verdict[l] = static_cast<std::uint8_t>(((disjoint >> l) & 1u ? kCcdBoxesDisjoint : 0) |
+                                           ((miss >> l) & 1u ? kCcdCubicMiss : 0));
+}
+
 /// The verdicts of queries q[0 .. n) of kind K.
 template <class S, int K>
 TECIDO_BATCH_INLINE void run_blocks(const double* x0, const double* x1, std::size_t stride, const std::array<int, 4>* q,
                                     int n, bool cubic, std::uint8_t* verdict) {
   constexpr int W = S::kWidth;
+  Points<S> pts;
+  if constexpr (S::kTransposes) {
+    if (x1 == x0 + 3 && stride == 8) {  // a vertex's two frames in one 64-byte record
+      for (int k = 0; k < n; k += W) {
+        const int lanes = std::min(W, n - k);
+        S::load_records(x0, q + k, lanes, pts);
+        decide_block<S, K>(pts, lanes, cubic, verdict + k);
+      }
+      return;
+    }
+  }
   // Double-buffered: the next block's points are written while this block's, written one
   // block earlier, are read back as vectors (a wide load of fresh narrow stores would wait
   // for them to leave the store buffer).
   Staged<W> staged[2];
-  PairBoxes<S> b;
   stage<W>(x0, x1, stride, q, std::min(W, n), staged[0]);
   for (int k = 0, buf = 0; k < n; k += W, buf ^= 1) {
     const int lanes = std::min(W, n - k);
     if (k + W < n) stage<W>(x0, x1, stride, q + k + W, std::min(W, n - k - W), staged[buf ^ 1]);
-    const Staged<W>& s = staged[buf];
-    boxes_of<S, K>(s, b);
-    unsigned disjoint = S::bits(swept_disjoint<S>(b));
-    // The linear program only where some lane needs it (most neighbours overlap at a frame).
-    const unsigned open = ~disjoint & ~S::bits(overlap_at_a_frame<S>(b)) & ((1u << W) - 1);
-    if (open) disjoint |= open & S::bits(kinetic_program_infeasible<S>(b));
-    const unsigned open_lanes = ~disjoint & ((1u << lanes) - 1);
-    const unsigned miss = cubic && open_lanes ? open_lanes & S::bits(cubic_miss<S, K>(s)) : 0u;
-    for (int l = 0; l < lanes; ++l)
-      verdict[k + l] = static_cast<std::uint8_t>(((disjoint >> l) & 1u ? kCcdBoxesDisjoint : 0) |
-                                                 ((miss >> l) & 1u ? kCcdCubicMiss : 0));
+    load_staged<S>(staged[buf], pts);
+    decide_block<S, K>(pts, lanes, cubic, verdict + k);
   }
 }
 

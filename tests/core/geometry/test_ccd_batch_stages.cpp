@@ -205,6 +205,21 @@ TEST(CcdBatchStages, DecidesAsCcdsOwnStagesAtEveryWidth) {
         for (int k = first; k < n; ++k)
           ASSERT_EQ(got[k - first], expected[k]) << ccd_kind_name(kind) << " width " << w << " query " << k;
       }
+      // Both frames interleaved in 64-byte records (x0, x1, two pads): the layout the
+      // continuous self-collision detector passes, which the AVX-512 path transposes.
+      std::vector<double> records(8 * b.x0.size(), -1.0);
+      for (std::size_t v = 0; v < b.x0.size(); ++v)
+        for (int c = 0; c < 3; ++c) {
+          records[8 * v + c] = b.x0[v][c];
+          records[8 * v + 3 + c] = b.x1[v][c];
+        }
+      for (int first : {0, 5}) {
+        std::vector<std::uint8_t> got(n, 0xFF);
+        ccd_batch_first_stages(kind, records.data(), records.data() + 3, 8, b.points.data() + first, n - first, true,
+                               got.data(), w);
+        for (int k = first; k < n; ++k)
+          ASSERT_EQ(got[k - first], expected[k]) << "records, width " << w << " query " << k;
+      }
       std::vector<std::uint8_t> boxes_only(n);
       ccd_batch_first_stages(kind, x0, x1, 3, b.points.data(), n, false, boxes_only.data(), w);
       for (int k = 0; k < n; ++k) ASSERT_EQ(boxes_only[k], expected[k] & kCcdBoxesDisjoint) << "width " << w;
