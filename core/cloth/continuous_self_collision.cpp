@@ -180,8 +180,8 @@ void ContinuousSelfCollisionDetector::sift(CcdKind kind, const std::array<int, 4
       const std::uint8_t v = verdict_[k];
       if (v & kCcdBoxesDisjoint) continue;
       ++tests_;  // the pair passed the box stages: handed to the test
-      if (v & kCcdCubicMiss) continue;
-      if (run(query_of(kind, points[first + k], x0, x1))) found.push_back(keys[first + k]);
+      if (v & (kCcdCubicMiss | kCcdRootMiss)) continue;
+      if ((v & kCcdRootHit) || run(query_of(kind, points[first + k], x0, x1))) found.push_back(keys[first + k]);
     }
   }
 }

@@ -21,9 +21,9 @@
 ///    triangle's boxes contain its owned features' at every time). Feature pairs whose swept
 ///    boxes, rounded outward to floats, overlap are queued (disjoint ones ccd's stage 2 would
 ///    reject), and the first stages of core's test run on them in batches, several per SIMD
-///    register (ccd_batch_stages.h: swept and kinetic boxes, the coplanarity cubic; bit for bit
-///    ccd's own decisions on the same numbers); the test itself runs on the pairs they leave
-///    open, from the stage after those.
+///    register (ccd_batch_stages.h: swept and kinetic boxes, the coplanarity cubic, then the
+///    root of ccd's time search; bit for bit ccd's own decisions on the same numbers); the test
+///    itself runs on the pairs they leave open, from the stage after the boxes.
 /// Output: vertex_face as (v, f), 0-based vertex and face indices, sorted; edge_edge as
 /// ((a, b), (c, d)) with a < b, c < d and (a, b) < (c, d), sorted lexicographically.
 /// Positions must be finite; both frames have the same size; no triangle repeats an index.

@@ -1,134 +1,17 @@
 #include "core/geometry/ccd_batch_stages.h"
 
+#include "core/geometry/ccd_batch_root.h"
+#include "core/geometry/ccd_batch_simd.h"
+
 #include <algorithm>
 #include <cstddef>
 #include <cstring>
-
-// The kernels are written once against a small set of lane operations (a "Simd" traits class:
-// loads, arithmetic, ordered comparisons giving masks, selection) and compiled three times:
-// baseline (2 lanes, SSE2, through GCC vector types), AVX (4 lanes, GCC vector types) and
-// AVX-512F (8 lanes, intrinsics: GCC 12 expands vector-type comparisons lane by lane there, as
-// AVX-512F keeps comparison results in mask registers). Every lane runs the scalar code's
-// operations in its order; fp-contract is off in the wide functions so that no multiply-add
-// is fused (AVX-512F has FMA; the baseline and AVX have none to fuse into).
-#if defined(__GNUC__) && defined(__x86_64__)
-#define TECIDO_BATCH_X86 1
-#include <immintrin.h>
-#define TECIDO_BATCH_TARGET_AVX __attribute__((target("avx"), optimize("fp-contract=off"), flatten))
-#define TECIDO_BATCH_TARGET_AVX512 __attribute__((target("avx512f"), optimize("fp-contract=off"), flatten))
-#else
-#define TECIDO_BATCH_X86 0
-#endif
-#define TECIDO_BATCH_INLINE inline __attribute__((always_inline))
-
-// The helpers below pass wide vectors by value; they are internal and always inlined into the
-// kernel of their width, so no call ever crosses an ABI boundary: GCC's note that such a
-// signature's ABI differs without AVX does not apply.
-#if defined(__GNUC__) && !defined(__clang__)
-#pragma GCC diagnostic ignored "-Wpsabi"
-#endif
 
 namespace tecido {
 
 namespace {
 
-/// GCC vector types of W doubles and of W 64-bit integers (comparison results: -1 true, 0 false).
-template <int W>
-struct VecTypes {
-  typedef double V __attribute__((vector_size(8 * W)));
-  typedef long long K __attribute__((vector_size(8 * W)));
-};
-
-/// Lane operations on GCC vector types of W doubles; masks are vectors of -1 (true) / 0.
-template <int W>
-struct VecSimd {
-  static constexpr int kWidth = W;
-  static constexpr bool kTransposes = false;
-  using V = typename VecTypes<W>::V;
-  using K = typename VecTypes<W>::K;
-  static TECIDO_BATCH_INLINE V load(const double* p) {
-    V v;
-    std::memcpy(&v, p, sizeof v);
-    return v;
-  }
-  static TECIDO_BATCH_INLINE V set1(double x) { return V{} + x; }
-  static TECIDO_BATCH_INLINE K lt(V a, V b) { return a < b; }
-  static TECIDO_BATCH_INLINE K le(V a, V b) { return a <= b; }
-  static TECIDO_BATCH_INLINE V select(K k, V a, V b) { return k ? a : b; }
-  static TECIDO_BATCH_INLINE V abs(V v) { return reinterpret_cast<V>(reinterpret_cast<K>(v) & 0x7FFFFFFFFFFFFFFFLL); }
-  static TECIDO_BATCH_INLINE K all() { return ~K{}; }
-  static TECIDO_BATCH_INLINE K none() { return K{}; }
-  static TECIDO_BATCH_INLINE K kand(K a, K b) { return a & b; }
-  static TECIDO_BATCH_INLINE K kor(K a, K b) { return a | b; }
-  static TECIDO_BATCH_INLINE K knot(K a) { return ~a; }
-  static TECIDO_BATCH_INLINE unsigned bits(K k) {
-    unsigned m = 0;
-    for (int l = 0; l < W; ++l) m |= (k[l] != 0 ? 1u : 0u) << l;
-    return m;
-  }
-};
-
-#if TECIDO_BATCH_X86
-#define TECIDO_BATCH_AVX512_INLINE inline __attribute__((target("avx512f")))
-/// Lane operations on AVX-512F registers of 8 doubles; masks are 8-bit mask registers.
-struct Avx512Simd {
-  static constexpr int kWidth = 8;
-  static constexpr bool kTransposes = true;
-  typedef __m512d V;
-  typedef __mmask8 K;
-  static TECIDO_BATCH_AVX512_INLINE V load(const double* p) { return _mm512_loadu_pd(p); }
-  static TECIDO_BATCH_AVX512_INLINE V set1(double x) { return _mm512_set1_pd(x); }
-  // Ordered, non-signalling: false when a lane holds NaN, as C++'s < and <= are.
-  static TECIDO_BATCH_AVX512_INLINE K lt(V a, V b) { return _mm512_cmp_pd_mask(a, b, _CMP_LT_OQ); }
-  static TECIDO_BATCH_AVX512_INLINE K le(V a, V b) { return _mm512_cmp_pd_mask(a, b, _CMP_LE_OQ); }
-  static TECIDO_BATCH_AVX512_INLINE V select(K k, V a, V b) { return _mm512_mask_blend_pd(k, b, a); }
-  static TECIDO_BATCH_AVX512_INLINE V abs(V v) { return _mm512_abs_pd(v); }
-  static TECIDO_BATCH_AVX512_INLINE K all() { return 0xFF; }
-  static TECIDO_BATCH_AVX512_INLINE K none() { return 0; }
-  static TECIDO_BATCH_AVX512_INLINE K kand(K a, K b) { return static_cast<K>(a & b); }
-  static TECIDO_BATCH_AVX512_INLINE K kor(K a, K b) { return static_cast<K>(a | b); }
-  static TECIDO_BATCH_AVX512_INLINE K knot(K a) { return static_cast<K>(~a); }
-  static TECIDO_BATCH_AVX512_INLINE unsigned bits(K k) { return k; }
-  /// The points of up to eight queries (lanes n .. 8 repeat the last) from 64-byte vertex
-  /// records x0 x y z, x1 x y z, pad, pad: one load per point and lane, then an 8 x 8
-  /// transpose in registers (unpack, then two rounds of 128-bit block shuffles), instead of
-  /// scalar stores read back as vectors. Pure data movement: the same values. (The maskz_
-  /// forms with a full mask: GCC 12's plain forms trip -Wmaybe-uninitialized.)
-  template <class P>
-  static TECIDO_BATCH_AVX512_INLINE void load_records(const double* base, const std::array<int, 4>* q, int n, P& out) {
-    for (int pt = 0; pt < 4; ++pt) {
-      V r[8];
-      for (int l = 0; l < 8; ++l) r[l] = _mm512_loadu_pd(base + 8 * static_cast<std::size_t>(q[l < n ? l : n - 1][pt]));
-      V even[4], odd[4];  // even[k]: columns 0 2 4 6 of rows 2k, 2k + 1 interleaved; odd: 1 3 5 7
-      for (int k = 0; k < 4; ++k) {
-        even[k] = _mm512_maskz_unpacklo_pd(0xFF, r[2 * k], r[2 * k + 1]);
-        odd[k] = _mm512_maskz_unpackhi_pd(0xFF, r[2 * k], r[2 * k + 1]);
-      }
-      // Rows 0-3 and 4-7 of columns {0, 4} and {2, 6} (even), {1, 5} and {3, 7} (odd).
-      const V e04a = _mm512_maskz_shuffle_f64x2(0xFF, even[0], even[1], 0x88), e26a = _mm512_maskz_shuffle_f64x2(0xFF, even[0], even[1], 0xDD);
-      const V e04b = _mm512_maskz_shuffle_f64x2(0xFF, even[2], even[3], 0x88), e26b = _mm512_maskz_shuffle_f64x2(0xFF, even[2], even[3], 0xDD);
-      const V o15a = _mm512_maskz_shuffle_f64x2(0xFF, odd[0], odd[1], 0x88), o37a = _mm512_maskz_shuffle_f64x2(0xFF, odd[0], odd[1], 0xDD);
-      const V o15b = _mm512_maskz_shuffle_f64x2(0xFF, odd[2], odd[3], 0x88), o37b = _mm512_maskz_shuffle_f64x2(0xFF, odd[2], odd[3], 0xDD);
-      out.p[0][pt][0] = _mm512_maskz_shuffle_f64x2(0xFF, e04a, e04b, 0x88);  // column 0: x0.x
-      out.p[1][pt][1] = _mm512_maskz_shuffle_f64x2(0xFF, e04a, e04b, 0xDD);  // column 4: x1.y
-      out.p[0][pt][2] = _mm512_maskz_shuffle_f64x2(0xFF, e26a, e26b, 0x88);  // column 2: x0.z
-      out.p[0][pt][1] = _mm512_maskz_shuffle_f64x2(0xFF, o15a, o15b, 0x88);  // column 1: x0.y
-      out.p[1][pt][2] = _mm512_maskz_shuffle_f64x2(0xFF, o15a, o15b, 0xDD);  // column 5: x1.z
-      out.p[1][pt][0] = _mm512_maskz_shuffle_f64x2(0xFF, o37a, o37b, 0x88);  // column 3: x1.x
-    }
-  }
-};
-#endif
-
-/// std::min and std::max, lane by lane: the same choice (exact either way for finite input).
-template <class S>
-TECIDO_BATCH_INLINE typename S::V vmin(typename S::V a, typename S::V b) {
-  return S::select(S::lt(b, a), b, a);
-}
-template <class S>
-TECIDO_BATCH_INLINE typename S::V vmax(typename S::V a, typename S::V b) {
-  return S::select(S::lt(a, b), b, a);
-}
+using namespace ccd_batch;
 
 /// The points of one block of queries, lane by lane: p[time][point][coordinate][lane].
 template <int W>
@@ -151,12 +34,6 @@ TECIDO_BATCH_INLINE void stage(const double* x0, const double* x1, std::size_t s
     }
   }
 }
-
-/// The points of one block in registers: p[time][point][coordinate], one lane per query.
-template <class S>
-struct Points {
-  typename S::V p[2][4][3];
-};
 
 template <class S>
 TECIDO_BATCH_INLINE void load_staged(const Staged<S::kWidth>& s, Points<S>& out) {
@@ -247,25 +124,10 @@ TECIDO_BATCH_INLINE typename S::K kinetic_program_infeasible(const PairBoxes<S>&
   return S::kor(both_negative, S::kand(S::knot(S::kor(at0, at1)), S::lt(upper, lower)));
 }
 
-/// A 3-vector of lanes (templated on the traits: GCC ignores the attributes of __m512d as a
-/// template argument).
-template <class S>
-struct V3 {
-  typename S::V x, y, z;
-};
-template <class S>
-TECIDO_BATCH_INLINE V3<S> cross(const V3<S>& a, const V3<S>& b) {
-  return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
-}
-template <class S>
-TECIDO_BATCH_INLINE typename S::V dot(const V3<S>& a, const V3<S>& b) {
-  return a.x * b.x + a.y * b.y + a.z * b.z;
-}
-
 /// The cubic's verdict (ccd_system.h's differences, ccd_coplanarity_cubic.cpp's coefficients
 /// and cheap bound, ccd_bernstein.h's certified sign), where ccd's scale is 1.
 template <class S, int K>
-TECIDO_BATCH_INLINE typename S::K cubic_miss(const Points<S>& s) {
+TECIDO_BATCH_INLINE typename S::K cubic_miss(const Points<S>& s, unsigned& unscaled_lanes) {
   using V = typename S::V;
   // Difference vectors X, Y, Z as (minuend, subtrahend) points (ccd_system.cpp's kPairs).
   constexpr int kPairs[2][3][2] = {{{2, 1}, {3, 1}, {0, 1}}, {{1, 0}, {2, 3}, {2, 0}}};
@@ -295,12 +157,14 @@ TECIDO_BATCH_INLINE typename S::K cubic_miss(const Points<S>& s) {
   const V lo = vmin<S>(vmin<S>(f0, f1), vmin<S>(f2, f3)), hi = vmax<S>(vmax<S>(f0, f1), vmax<S>(f2, f3));
   const V big = vmax<S>(m[0], vmax<S>(m[1], m[2]));
   const auto unscaled = S::kand(S::le(S::set1(0x1p-128), big), S::le(big, S::set1(0x1p125)));
+  unscaled_lanes = S::bits(unscaled);
   return S::kand(unscaled, S::kor(S::lt(e0, lo), S::lt(hi, S::set1(0.0) - e0)));
 }
 
-/// The verdicts of one block of queries (lanes valid of them).
+/// The first stages' verdicts of one block of queries (lanes valid of them); returns the
+/// lanes left open where ccd's scale is 1 (for root_decisions).
 template <class S, int K>
-TECIDO_BATCH_INLINE void decide_block(const Points<S>& s, int lanes, bool cubic, std::uint8_t* verdict) {
+TECIDO_BATCH_INLINE unsigned decide_block(const Points<S>& s, int lanes, bool cubic, std::uint8_t* verdict) {
   constexpr int W = S::kWidth;
   PairBoxes<S> b;
   boxes_of<S, K>(s, b);
@@ -309,10 +173,56 @@ TECIDO_BATCH_INLINE void decide_block(const Points<S>& s, int lanes, bool cubic,
   const unsigned open = ~disjoint & ~S::bits(overlap_at_a_frame<S>(b)) & ((1u << W) - 1);
   if (open) disjoint |= open & S::bits(kinetic_program_infeasible<S>(b));
   const unsigned open_lanes = ~disjoint & ((1u << lanes) - 1);
-  const unsigned miss = cubic && open_lanes ? open_lanes & S::bits(cubic_miss<S, K>(s)) : 0u;
+  unsigned unscaled = 0;
+  const unsigned miss = cubic && open_lanes ? open_lanes & S::bits(cubic_miss<S, K>(s, unscaled)) : 0u;
   for (int l = 0; l < lanes; ++l)
     verdict[l] = static_cast<std::uint8_t>(((disjoint >> l) & 1u ? kCcdBoxesDisjoint : 0) |
                                            ((miss >> l) & 1u ? kCcdCubicMiss : 0));
+  return open_lanes & ~miss & unscaled;
+}
+
+/// Where the points come from: two arrays with a stride, or (records) both frames interleaved
+/// in 64-byte vertex records, which the AVX-512 traits transpose in registers.
+struct Source {
+  const double *x0, *x1;
+  std::size_t stride;
+  bool records;
+};
+
+/// The points of queries q[0 .. n) (lanes n .. W repeat the last), through memory when the
+/// traits do not transpose records.
+template <class S>
+TECIDO_BATCH_INLINE void load_points(const Source& src, const std::array<int, 4>* q, int n, Points<S>& pts) {
+  if constexpr (S::kTransposes) {
+    if (src.records) {
+      S::load_records(src.x0, q, n, pts);
+      return;
+    }
+  }
+  Staged<S::kWidth> st;
+  stage<S::kWidth>(src.x0, src.x1, src.stride, q, n, st);
+  load_staged<S>(st, pts);
+}
+
+/// Queries the first stages left open, gathered into full blocks for root_decisions (which
+/// costs a block whatever the number of lanes it decides).
+template <class S>
+struct RootQueue {
+  std::array<int, 4> q[S::kWidth];
+  int at[S::kWidth];
+  int n = 0;
+};
+
+template <class S, int K>
+TECIDO_BATCH_INLINE void run_root(const Source& src, RootQueue<S>& rq, std::uint8_t* verdict) {
+  if (rq.n == 0) return;
+  Points<S> pts;
+  load_points<S>(src, rq.q, rq.n, pts);
+  unsigned miss = 0, hit = 0;
+  root_decisions<S, K>(pts, (1u << rq.n) - 1, miss, hit);
+  for (int l = 0; l < rq.n; ++l)
+    verdict[rq.at[l]] |= static_cast<std::uint8_t>(((miss >> l) & 1u ? kCcdRootMiss : 0) | ((hit >> l) & 1u ? kCcdRootHit : 0));
+  rq.n = 0;
 }
 
 /// The verdicts of queries q[0 .. n) of kind K.
@@ -320,28 +230,30 @@ template <class S, int K>
 TECIDO_BATCH_INLINE void run_blocks(const double* x0, const double* x1, std::size_t stride, const std::array<int, 4>* q,
                                     int n, bool cubic, std::uint8_t* verdict) {
   constexpr int W = S::kWidth;
+  const Source src{x0, x1, stride, S::kTransposes && x1 == x0 + 3 && stride == 8};
   Points<S> pts;
-  if constexpr (S::kTransposes) {
-    if (x1 == x0 + 3 && stride == 8) {  // a vertex's two frames in one 64-byte record
-      for (int k = 0; k < n; k += W) {
-        const int lanes = std::min(W, n - k);
-        S::load_records(x0, q + k, lanes, pts);
-        decide_block<S, K>(pts, lanes, cubic, verdict + k);
-      }
-      return;
-    }
-  }
-  // Double-buffered: the next block's points are written while this block's, written one
-  // block earlier, are read back as vectors (a wide load of fresh narrow stores would wait
-  // for them to leave the store buffer).
+  RootQueue<S> rq;
+  // Double-buffered when staged through memory: the next block's points are written while this
+  // block's, written one block earlier, are read back as vectors (a wide load of fresh narrow
+  // stores would wait for them to leave the store buffer).
   Staged<W> staged[2];
-  stage<W>(x0, x1, stride, q, std::min(W, n), staged[0]);
+  if (!src.records) stage<W>(x0, x1, stride, q, std::min(W, n), staged[0]);
   for (int k = 0, buf = 0; k < n; k += W, buf ^= 1) {
     const int lanes = std::min(W, n - k);
-    if (k + W < n) stage<W>(x0, x1, stride, q + k + W, std::min(W, n - k - W), staged[buf ^ 1]);
-    load_staged<S>(staged[buf], pts);
-    decide_block<S, K>(pts, lanes, cubic, verdict + k);
+    if (src.records) {
+      load_points<S>(src, q + k, lanes, pts);
+    } else {
+      if (k + W < n) stage<W>(x0, x1, stride, q + k + W, std::min(W, n - k - W), staged[buf ^ 1]);
+      load_staged<S>(staged[buf], pts);
+    }
+    for (unsigned open = decide_block<S, K>(pts, lanes, cubic, verdict + k); open; open &= open - 1) {
+      const int l = __builtin_ctz(open);
+      rq.q[rq.n] = q[k + l];
+      rq.at[rq.n++] = k + l;
+      if (rq.n == W) run_root<S, K>(src, rq, verdict);
+    }
   }
+  run_root<S, K>(src, rq, verdict);
 }
 
 using StagesKernel = void (*)(const double*, const double*, std::size_t, const std::array<int, 4>*, int, bool,

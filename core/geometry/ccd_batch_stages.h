@@ -1,8 +1,9 @@
 #pragma once
 /// The first stages of core's continuous collision test (ccd.h: swept boxes, kinetic boxes, the
-/// coplanarity cubic on [0, 1]) decided for many queries at once, several per SIMD register, for
-/// a caller that holds the queries as point indices into two position arrays (a mesh's frames:
-/// continuous self-collision, core/cloth/continuous_self_collision.h).
+/// coplanarity cubic on [0, 1]) and the root of its time search decided for many queries at
+/// once, several per SIMD register, for a caller that holds the queries as point indices into
+/// two position arrays (a mesh's frames: continuous self-collision,
+/// core/cloth/continuous_self_collision.h).
 ///
 /// Each decision is the one ccd's own stage takes on the same query, computed by the same
 /// operations on the same doubles in the same order, lane by lane (IEEE-754 round-to-nearest,
@@ -23,6 +24,11 @@
 /// The stages commute: ccd answers miss when any of them certifies (for finite input the
 /// system's "all points coincide" case has f = 0, which no bound certifies), so a caller may
 /// act on any verdict in any order and still give ccd's answer.
+/// The queries they leave open where ccd's scale is 1 are gathered into full blocks and the
+/// root of ccd's time search is replayed on them (ccd_batch_root.h: the cubic's permanent
+/// bound, the projected quadratics, rule 2, rule J with its Newton iteration and bracket): where
+/// ccd decides there, the verdict says miss or hit, ccd's answer; elsewhere nothing (the caller
+/// runs ccd, which decides deeper). Replayed only for core's default settings.
 ///
 /// Widths: 2 (SSE2, part of x86-64, and the generic build), 4 (AVX) and 8 (AVX-512F), chosen
 /// at run time from what the CPU has; the verdicts do not depend on the width (tests compare).
@@ -38,6 +44,8 @@ namespace tecido {
 enum CcdBatchVerdict : std::uint8_t {
   kCcdBoxesDisjoint = 1,  ///< swept or kinetic boxes disjoint: ccd answers miss at its stage 2
   kCcdCubicMiss = 2,      ///< boxes not disjoint, the cubic certainly nonzero on [0, 1] (cheap bound, unscaled): ccd answers miss
+  kCcdRootMiss = 4,       ///< neither, and ccd's time search answers miss at its root (ccd_batch_root.h)
+  kCcdRootHit = 8,        ///< neither, and ccd's time search answers hit at its root
 };
 
 /// The widest vector width this CPU runs (8, 4 or 2), and whether a width can run here.
@@ -45,7 +53,8 @@ int ccd_batch_widest();
 bool ccd_batch_width_available(int width);
 
 /// For each of the n queries (points queries[k][0..3] in the order of ccd_query.h), the
-/// verdict bits above into verdict[k]; the cubic is evaluated only when `cubic` is true. Point
+/// verdict bits above into verdict[k]; the cubic and the root are evaluated only when `cubic`
+/// is true (core's test with its default settings). Point
 /// p is x0[stride p + c] at t = 0 and x1[stride p + c] at t = 1 (c = 0, 1, 2: x, y, z): stride
 /// 3 for two arrays of Vec3, or both frames interleaved in one array. Finite positions.
 /// width 0: the widest available; otherwise one of 2, 4, 8 that is available.

@@ -9,6 +9,7 @@
 #include "core/geometry/ccd_bernstein.h"
 #include "core/geometry/ccd_coplanarity_cubic.h"
 #include "core/geometry/ccd_kinetic_boxes.h"
+#include "core/geometry/ccd_stats.h"
 #include "core/geometry/ccd_system.h"
 
 #include <gtest/gtest.h>
@@ -52,9 +53,9 @@ Batch make_batch(std::uint64_t seed) {
   auto point = [&] { return Vec3(u(rng), u(rng), u(rng)); };
   auto offset = [&](double r) { return Vec3(r * s(rng), r * s(rng), r * s(rng)); };
   Batch base;
-  for (int i = 0; i < 700; ++i) {
+  for (int i = 0; i < 800; ++i) {
     std::array<Vec3, 4> a, b;
-    const int family = i % 7;
+    const int family = i % 8;
     for (int k = 0; k < 4; ++k) a[k] = point();
     if (family == 0) {  // random-large: independent frames
       for (int k = 0; k < 4; ++k) b[k] = point();
@@ -83,6 +84,19 @@ Batch make_batch(std::uint64_t seed) {
       a[(r + 1) % 4] = a[r];
       for (int k = 0; k < 4; ++k) b[k] = (i % 2 == 0) ? a[k] : a[k] + offset(0.05);
       if (i % 3 == 0) b = a;
+    } else if (family == 7) {  // a contact at time ts: the vertex in the face, or the edges crossing
+      const double ts = u(rng), cu = 0.8 * u(rng), cv = (0.8 - cu) * u(rng);
+      std::array<Vec3, 4> at;
+      for (int k = 0; k < 4; ++k) at[k] = point();
+      // Vertex-face: point 0 = corner 1 + cu (2 - 1) + cv (3 - 1). Edge-edge: both edges pass
+      // through the same point (point 1 chosen so that 0 + cu' (1 - 0) meets 2 + cv' (3 - 2)).
+      const Vec3 hitpoint = at[1] + cu * (at[2] - at[1]) + cv * (at[3] - at[1]);
+      at[0] = hitpoint;
+      for (int k = 0; k < 4; ++k) {
+        const Vec3 vel = offset(0.2);
+        a[k] = at[k] - ts * vel;
+        b[k] = at[k] + (1.0 - ts) * vel;
+      }
     } else {  // boxes touching at a frame, exactly (dyadic coordinates)
       for (int k = 0; k < 4; ++k) {
         a[k] = Vec3(std::floor(a[k].x() * 8) / 8, std::floor(a[k].y() * 8) / 8, std::floor(a[k].z() * 8) / 8);
@@ -169,6 +183,9 @@ bool cubic_rejects_cheaply(const CcdQuery& q) {
   return ccd_certified_sign(f, 4, 1, cheap) != 0;
 }
 
+/// The verdict bits of the first stages (the root's are checked separately).
+constexpr std::uint8_t kFirstStages = kCcdBoxesDisjoint | kCcdCubicMiss;
+
 std::vector<int> widths() {
   std::vector<int> w;
   for (int k : {2, 4, 8})
@@ -203,7 +220,7 @@ TEST(CcdBatchStages, DecidesAsCcdsOwnStagesAtEveryWidth) {
         std::vector<std::uint8_t> got(n, 0xFF);
         ccd_batch_first_stages(kind, x0, x1, 3, b.points.data() + first, n - first, true, got.data(), w);
         for (int k = first; k < n; ++k)
-          ASSERT_EQ(got[k - first], expected[k]) << ccd_kind_name(kind) << " width " << w << " query " << k;
+          ASSERT_EQ(got[k - first] & kFirstStages, expected[k]) << ccd_kind_name(kind) << " width " << w << " query " << k;
       }
       // Both frames interleaved in 64-byte records (x0, x1, two pads): the layout the
       // continuous self-collision detector passes, which the AVX-512 path transposes.
@@ -218,12 +235,47 @@ TEST(CcdBatchStages, DecidesAsCcdsOwnStagesAtEveryWidth) {
         ccd_batch_first_stages(kind, records.data(), records.data() + 3, 8, b.points.data() + first, n - first, true,
                                got.data(), w);
         for (int k = first; k < n; ++k)
-          ASSERT_EQ(got[k - first], expected[k]) << "records, width " << w << " query " << k;
+          ASSERT_EQ(got[k - first] & kFirstStages, expected[k]) << "records, width " << w << " query " << k;
       }
       std::vector<std::uint8_t> boxes_only(n);
       ccd_batch_first_stages(kind, x0, x1, 3, b.points.data(), n, false, boxes_only.data(), w);
       for (int k = 0; k < n; ++k) ASSERT_EQ(boxes_only[k], expected[k] & kCcdBoxesDisjoint) << "width " << w;
     }
+  }
+}
+
+TEST(CcdBatchStages, RootDecisionsAreCcdsAndTheSameAtEveryWidth) {
+  // The root of the time search replayed (ccd_batch_root.h): a lane it decides must be one ccd
+  // answers the same way, within its first node (or by the cubic's permanent bound) and
+  // without the inclusion search; every width decides the same lanes the same way.
+  for (CcdKind kind : {CcdKind::VertexFace, CcdKind::EdgeEdge}) {
+    const Batch b = make_batch(kind == CcdKind::VertexFace ? 21 : 22);
+    const int n = static_cast<int>(b.points.size());
+    const double* x0 = b.x0.front().data();
+    const double* x1 = b.x1.front().data();
+    std::vector<std::uint8_t> reference;
+    for (int w : widths()) {
+      std::vector<std::uint8_t> got(n);
+      ccd_batch_first_stages(kind, x0, x1, 3, b.points.data(), n, true, got.data(), w);
+      if (reference.empty()) reference = got;
+      ASSERT_EQ(got, reference) << "width " << w;
+    }
+    int misses = 0, hits = 0;
+    for (int k = 0; k < n; ++k) {
+      const std::uint8_t v = reference[k];
+      if (!(v & (kCcdRootMiss | kCcdRootHit))) continue;
+      EXPECT_FALSE(v & kFirstStages);
+      ccd_stats() = CcdStats{};
+      const CcdAnswer a = ccd(b.query(kind, k));
+      const CcdStats st = ccd_stats();
+      EXPECT_EQ(a.hit, (v & kCcdRootHit) != 0) << ccd_kind_name(kind) << " query " << k;
+      EXPECT_TRUE(st.time_search_nodes == 1 || st.cubic_rejections == 1) << "query " << k;
+      EXPECT_EQ(st.inclusion_calls, 0u) << "query " << k;
+      misses += (v & kCcdRootMiss) != 0;
+      hits += (v & kCcdRootHit) != 0;
+    }
+    EXPECT_GT(misses, 50) << ccd_kind_name(kind);
+    EXPECT_GT(hits, 50) << ccd_kind_name(kind);
   }
 }
 
