@@ -34,7 +34,9 @@ static_assert(TriangleBvh::kWidth == 4, "kLaterLanes and the SSE paths assume fo
 inline int lowest_bit(unsigned m) { return __builtin_ctz(m); }
 
 #if TECIDO_BVH_AVX512
-#define TECIDO_BVH_TARGET_AVX512 __attribute__((target("avx512f")))
+// fp-contract off: AVX-512F has fused multiply-add, which GCC would otherwise form in the
+// kinetic test (its default is -ffp-contract=fast), giving other roundings than the SSE2 path.
+#define TECIDO_BVH_TARGET_AVX512 __attribute__((target("avx512f"), optimize("fp-contract=off")))
 // The 16 lanes of a 4 x 4 mask: lane 4k + l pairs lane k of node a with lane l of node b. a's
 // row of four is repeated (k = lane / 4), b's row is tiled (l = lane % 4). (The maskz_ forms
 // with a full mask: GCC 12's plain broadcast/permutexvar trip -Wuninitialized.)
