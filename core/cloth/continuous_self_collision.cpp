@@ -2,10 +2,16 @@
 
 #include "core/cloth/mesh_topology.h"
 #include "core/geometry/ccd.h"
-#include "core/geometry/ccd_kinetic_boxes.h"
+#include "core/geometry/ccd_batch_stages.h"
 #include "core/geometry/ccd_pipeline.h"
+#include "core/geometry/outward_float.h"
 
 #include <algorithm>
+#include <cstdint>
+
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 namespace tecido {
 
@@ -17,7 +23,8 @@ bool has_vertex(const std::array<int, 3>& t, int v) { return t[0] == v || t[1] =
 
 bool share_vertex(const MeshEdge& e, const MeshEdge& f) { return e[0] == f[0] || e[0] == f[1] || e[1] == f[0] || e[1] == f[1]; }
 
-EdgeEdgePair ordered(const MeshEdge& e, const MeshEdge& f) { return f < e ? EdgeEdgePair{f, e} : EdgeEdgePair{e, f}; }
+/// A pair of nonnegative ids packed so that integer order is the pairs' lexicographic order.
+std::uint64_t pair_key(int a, int b) { return static_cast<std::uint64_t>(a) << 32 | static_cast<std::uint32_t>(b); }
 
 void sort_contacts(ContinuousContacts& c) {
   std::sort(c.vertex_face.begin(), c.vertex_face.end());
@@ -32,41 +39,17 @@ std::vector<MeshEdge> mesh_edges(const std::vector<std::array<int, 3>>& triangle
   return build_mesh_topology(nv, triangles).edges;
 }
 
-/// Extends box b (lo xyz, hi xyz) by point p.
-void extend(double b[6], const Vec3& p) {
-  for (int c = 0; c < 3; ++c) {
-    b[c] = std::min(b[c], p[c]);
-    b[c + 3] = std::max(b[c + 3], p[c]);
-  }
-}
+/// Pairs queued before the batched first stages run on them.
+constexpr int kChunk = 256;
 
-void point_box(double b[6], const Vec3& p) {
-  for (int c = 0; c < 3; ++c) b[c] = b[c + 3] = p[c];
-}
-
-/// The first stages of core's test (ccd_pipeline.cpp) on two primitives' boxes at both frames:
-/// their swept boxes (the union of the two) overlap and their kinetic boxes are not certainly
-/// disjoint. The boxes are those the pipeline computes from the query's points, so a pair
-/// rejected here is one the test would reject.
-template <class B>
-bool may_touch(const B& a, const B& b) {
-  for (int c = 0; c < 3; ++c) {
-    const double alo = std::min(a.b0[c], a.b1[c]), ahi = std::max(a.b0[c + 3], a.b1[c + 3]);
-    const double blo = std::min(b.b0[c], b.b1[c]), bhi = std::max(b.b0[c + 3], b.b1[c + 3]);
-    if (ahi < blo || bhi < alo) return false;
+CcdQuery query_of(CcdKind kind, const std::array<int, 4>& points, const std::vector<Vec3>& x0, const std::vector<Vec3>& x1) {
+  CcdQuery q;
+  q.kind = kind;
+  for (int k = 0; k < 4; ++k) {
+    q.x0[k] = x0[points[k]];
+    q.x1[k] = x1[points[k]];
   }
-  return !ccd_kinetic_boxes_disjoint(a.b0, a.b1, b.b0, b.b1);
-}
-
-/// Swept boxes overlap (the cheap half of may_touch).
-template <class B>
-bool swept_overlap(const B& a, const B& b) {
-  for (int c = 0; c < 3; ++c) {
-    const double alo = std::min(a.b0[c], a.b1[c]), ahi = std::max(a.b0[c + 3], a.b1[c + 3]);
-    const double blo = std::min(b.b0[c], b.b1[c]), bhi = std::max(b.b0[c + 3], b.b1[c + 3]);
-    if (ahi < blo || bhi < alo) return false;
-  }
-  return true;
+  return q;
 }
 
 }  // namespace
@@ -117,20 +100,17 @@ ContinuousSelfCollisionDetector::ContinuousSelfCollisionDetector(const std::vect
   const MeshTopology topo = build_mesh_topology(nv, tris_);
   edges_ = topo.edges;
   // Owners: the first triangle that has the vertex or edge.
-  owned_.assign(tris_.size(), Owned{});
+  records_.assign(tris_.size(), TriangleRecord{});
   std::vector<char> vertex_taken(nv, 0), edge_taken(edges_.size(), 0);
   for (std::size_t t = 0; t < tris_.size(); ++t) {
-    Owned& o = owned_[t];
+    TriangleRecord& r = records_[t];
     for (int k = 0; k < 3; ++k) {
-      const int v = tris_[t][k], e = topo.tri_edges[t][k];
-      if (!vertex_taken[v]) {
-        vertex_taken[v] = 1;
-        o.vertex[o.vertices++] = v;
-      }
-      if (!edge_taken[e]) {
-        edge_taken[e] = 1;
-        o.edge[o.edge_count++] = e;
-      }
+      const int v = tris_[t][k], e = topo.tri_edges[t][k];  // edge k joins corners k and k + 1
+      r.v[k] = v;
+      r.edge[k] = e;
+      if (!vertex_taken[v]) r.owns_vertex |= 1u << k;
+      if (!edge_taken[e]) r.owns_edge |= 1u << k;
+      vertex_taken[v] = edge_taken[e] = 1;
     }
   }
   list_neighbour_features(nv);
@@ -156,109 +136,226 @@ void ContinuousSelfCollisionDetector::list_neighbour_features(int vertex_count) 
   // from the triangle pair of its owners), without the boxes.
   for (const auto& [i, j] : neighbours) {
     for (int side = 0; side < 2; ++side) {
-      const Owned& o = owned_[side == 0 ? i : j];
+      const TriangleRecord& o = records_[side == 0 ? i : j];
       const int f = side == 0 ? j : i;
-      for (int k = 0; k < o.vertices; ++k)
-        if (!has_vertex(tris_[f], o.vertex[k])) near_vf_.push_back({o.vertex[k], f});
+      const std::array<int, 3>& face = tris_[f];
+      for (int k = 0; k < 3; ++k) {
+        if (!((o.owns_vertex >> k) & 1u) || has_vertex(face, o.v[k])) continue;
+        near_vf_points_.push_back({o.v[k], face[0], face[1], face[2]});
+        near_vf_keys_.push_back(pair_key(o.v[k], f));
+      }
     }
-    for (int a = 0; a < owned_[i].edge_count; ++a) {
-      for (int b = 0; b < owned_[j].edge_count; ++b) {
-        int ea = owned_[i].edge[a], eb = owned_[j].edge[b];
+    for (int a = 0; a < 3; ++a) {
+      for (int b = 0; b < 3; ++b) {
+        if (!((records_[i].owns_edge >> a) & 1u) || !((records_[j].owns_edge >> b) & 1u)) continue;
+        const int ea = records_[i].edge[a], eb = records_[j].edge[b];
         if (share_vertex(edges_[ea], edges_[eb])) continue;
-        if (edges_[eb] < edges_[ea]) std::swap(ea, eb);
-        near_ee_.push_back({ea, eb});
+        const MeshEdge& e = edges_[std::min(ea, eb)];
+        const MeshEdge& g = edges_[std::max(ea, eb)];
+        near_ee_points_.push_back({e[0], e[1], g[0], g[1]});
+        near_ee_keys_.push_back(pair_key(std::min(ea, eb), std::max(ea, eb)));
       }
     }
   }
 }
 
 bool ContinuousSelfCollisionDetector::run(const CcdQuery& q) const {
-  // Core's test: its box stages were just run here on the same boxes (may_touch), so go on
-  // from the next stage (the same answer, without checking the boxes twice).
+  // Core's test: its box stages (and, when they certify, the cubic) were already run here on
+  // the same numbers, so go on from the next stage (the same answer).
   return test_ == &default_test ? ccd_after_boxes(q).hit : test_(q).hit;
 }
 
+void ContinuousSelfCollisionDetector::sift(CcdKind kind, const std::array<int, 4>* points, const std::uint64_t* keys,
+                                          int n, const std::vector<Vec3>& x0, const std::vector<Vec3>& x1) {
+  static_assert(sizeof(VertexFrames) == 8 * sizeof(double), "a vertex's frames are read as 8 doubles");
+  const double* base = frames_.empty() ? nullptr : frames_.front().x0;
+  // The cubic verdict is core's test's own stage: a custom test gets the box stages only.
+  const bool cubic = test_ == &default_test;
+  std::vector<std::uint64_t>& found = kind == CcdKind::VertexFace ? vf_keys_ : ee_keys_;
+  verdict_.resize(kChunk);
+  for (int first = 0; first < n; first += kChunk) {
+    const int m = std::min(kChunk, n - first);
+    ccd_batch_first_stages(kind, base, base + 3, 8, points + first, m, cubic, verdict_.data(), width_);
+    for (int k = 0; k < m; ++k) {
+      const std::uint8_t v = verdict_[k];
+      if (v & kCcdBoxesDisjoint) continue;
+      ++tests_;  // the pair passed the box stages: handed to the test
+      if (v & (kCcdCubicMiss | kCcdRootMiss)) continue;
+      if ((v & kCcdRootHit) || run(query_of(kind, points[first + k], x0, x1))) found.push_back(keys[first + k]);
+    }
+  }
+}
+
+void ContinuousSelfCollisionDetector::push(CcdKind kind, const std::array<int, 4>& points, std::uint64_t key, bool keep,
+                                          const std::vector<Vec3>& x0, const std::vector<Vec3>& x1) {
+  // Written whether kept or not, counted only when kept: no branch on the (unpredictable)
+  // outcome of the box test that decided `keep`.
+  Pending& p = pending_[kind == CcdKind::VertexFace ? 0 : 1];
+  p.points[p.count] = points;
+  p.keys[p.count] = key;
+  p.count += keep ? 1 : 0;
+  if (p.count < kChunk) return;
+  sift(kind, p.points.data(), p.keys.data(), kChunk, x0, x1);
+  p.count = 0;
+}
+
+void ContinuousSelfCollisionDetector::flush(const std::vector<Vec3>& x0, const std::vector<Vec3>& x1) {
+  for (int kind = 0; kind < 2; ++kind) {
+    Pending& p = pending_[kind];
+    sift(kind == 0 ? CcdKind::VertexFace : CcdKind::EdgeEdge, p.points.data(), p.keys.data(), p.count, x0, x1);
+    p.count = 0;
+  }
+}
+
+ContinuousSelfCollisionDetector::FloatBox ContinuousSelfCollisionDetector::merged(const FloatBox& a, const FloatBox& b) {
+  FloatBox m;
+#if defined(__SSE2__)
+  _mm_store_ps(m.lo, _mm_min_ps(_mm_load_ps(a.lo), _mm_load_ps(b.lo)));
+  _mm_store_ps(m.hi, _mm_max_ps(_mm_load_ps(a.hi), _mm_load_ps(b.hi)));
+#else
+  for (int c = 0; c < 4; ++c) {
+    m.lo[c] = std::min(a.lo[c], b.lo[c]);
+    m.hi[c] = std::max(a.hi[c], b.hi[c]);
+  }
+#endif
+  return m;
+}
+
+bool ContinuousSelfCollisionDetector::overlap(const FloatBox& a, const FloatBox& b) {
+  // Branch-free: the outcome is a coin toss for neighbouring features.
+#if defined(__SSE2__)
+  const __m128 o = _mm_and_ps(_mm_cmple_ps(_mm_load_ps(a.lo), _mm_load_ps(b.hi)),
+                              _mm_cmple_ps(_mm_load_ps(b.lo), _mm_load_ps(a.hi)));
+  return _mm_movemask_ps(o) == 0xF;
+#else
+  bool o = true;
+  for (int c = 0; c < 4; ++c) o &= (a.lo[c] <= b.hi[c]) & (b.lo[c] <= a.hi[c]);
+  return o;
+#endif
+}
+
 void ContinuousSelfCollisionDetector::test_pair(int i, int j, const std::vector<Vec3>& x0, const std::vector<Vec3>& x1) {
-  // Every feature's boxes lie in its triangle's, so triangles whose kinetic boxes never meet
-  // have no feature pair that may touch.
-  if (ccd_kinetic_boxes_disjoint(tbox_[i].b0, tbox_[i].b1, tbox_[j].b0, tbox_[j].b1)) return;
-  ++kinetic_pairs_;
-  const Owned& oi = owned_[i];
-  const Owned& oj = owned_[j];
-  // Vertices of one triangle against the other face.
+  const TriangleRecord* r[2] = {&records_[i], &records_[j]};
+  const int id[2] = {i, j};
+  const FloatBox* boxes = boxes_.data();
+  FloatBox corner[2][3], tri[2];  // swept boxes of the corners and of the triangles
   for (int side = 0; side < 2; ++side) {
-    const Owned& o = side == 0 ? oi : oj;
-    const int f = side == 0 ? j : i;
-    const std::array<int, 3>& face = tris_[f];
-    for (int k = 0; k < o.vertices; ++k) {
-      const int v = o.vertex[k];
-      if (has_vertex(face, v) || !may_touch(vbox_[v], tbox_[f])) continue;
-      ++tests_;
-      if (run(vertex_face_query(x0, x1, v, face))) out_.vertex_face.push_back({v, f});
+    for (int k = 0; k < 3; ++k) corner[side][k] = boxes[r[side]->v[k]];
+    tri[side] = merged(merged(corner[side][0], corner[side][1]), corner[side][2]);
+  }
+  // Vertices of one triangle against the other face. Every feature's swept box lies in its
+  // triangle's: an owned vertex or edge whose box misses the other triangle's misses all of
+  // that triangle's features (ccd's stage 2 would reject them all).
+  for (int side = 0; side < 2; ++side) {
+    const TriangleRecord& o = *r[side];
+    const TriangleRecord& f = *r[1 - side];
+    for (int k = 0; k < 3; ++k) {
+      const int v = o.v[k];
+      if (!((o.owns_vertex >> k) & 1u) || v == f.v[0] || v == f.v[1] || v == f.v[2]) continue;
+      push(CcdKind::VertexFace, {v, f.v[0], f.v[1], f.v[2]}, pair_key(v, id[1 - side]),
+           overlap(corner[side][k], tri[1 - side]), x0, x1);
     }
   }
   // Edges of one against edges of the other.
-  for (int a = 0; a < oi.edge_count; ++a) {
-    const int ea = oi.edge[a];
-    if (!swept_overlap(ebox_[ea], tbox_[j])) continue;
-    for (int b = 0; b < oj.edge_count; ++b) {
-      const int eb = oj.edge[b];
-      if (share_vertex(edges_[ea], edges_[eb]) || !may_touch(ebox_[ea], ebox_[eb])) continue;
-      ++tests_;
-      // The query in the pair's own order (as the brute force builds it): same answer.
-      const EdgeEdgePair pair = ordered(edges_[ea], edges_[eb]);
-      if (run(edge_edge_query(x0, x1, pair[0], pair[1]))) out_.edge_edge.push_back(pair);
+  for (int a = 0; a < 3; ++a) {
+    if (!((r[0]->owns_edge >> a) & 1u)) continue;
+    const int a0 = r[0]->v[a], a1 = r[0]->v[(a + 1) % 3];
+    const FloatBox ea = merged(corner[0][a], corner[0][(a + 1) % 3]);
+    if (!overlap(ea, tri[1])) continue;
+    for (int b = 0; b < 3; ++b) {
+      if (!((r[1]->owns_edge >> b) & 1u)) continue;
+      const int b0 = r[1]->v[b], b1 = r[1]->v[(b + 1) % 3];
+      if (a0 == b0 || a0 == b1 || a1 == b0 || a1 == b1) continue;
+      const FloatBox eb = merged(corner[1][b], corner[1][(b + 1) % 3]);
+      // The query in the pair's own order (as the brute force builds it): same answer. Edge
+      // ids are numbered in the edges' sorted order, so the smaller id is the first edge.
+      const bool first = r[0]->edge[a] < r[1]->edge[b];
+      const std::array<int, 4> points = first ? std::array<int, 4>{a0, a1, b0, b1} : std::array<int, 4>{b0, b1, a0, a1};
+      const std::uint64_t key = first ? pair_key(r[0]->edge[a], r[1]->edge[b]) : pair_key(r[1]->edge[b], r[0]->edge[a]);
+      push(CcdKind::EdgeEdge, points, key, overlap(ea, eb), x0, x1);
+    }
+  }
+}
+
+void ContinuousSelfCollisionDetector::sift_neighbours(const std::vector<Vec3>& x0, const std::vector<Vec3>& x1) {
+  const FloatBox* boxes = boxes_.data();
+  for (int kind = 0; kind < 2; ++kind) {
+    const std::vector<std::array<int, 4>>& points = kind == 0 ? near_vf_points_ : near_ee_points_;
+    const std::vector<std::uint64_t>& keys = kind == 0 ? near_vf_keys_ : near_ee_keys_;
+    for (std::size_t k = 0; k < points.size(); ++k) {
+      if (k + 16 < points.size())
+        for (int c = 0; c < 4; ++c) __builtin_prefetch(&boxes[points[k + 16][c]]);
+      const std::array<int, 4>& p = points[k];
+      if (kind == 0) {  // the vertex against the face
+        const FloatBox face = merged(merged(boxes[p[1]], boxes[p[2]]), boxes[p[3]]);
+        push(CcdKind::VertexFace, p, keys[k], overlap(boxes[p[0]], face), x0, x1);
+      } else {  // edge against edge
+        push(CcdKind::EdgeEdge, p, keys[k], overlap(merged(boxes[p[0]], boxes[p[1]]), merged(boxes[p[2]], boxes[p[3]])),
+             x0, x1);
+      }
     }
   }
 }
 
 const ContinuousContacts& ContinuousSelfCollisionDetector::detect(const std::vector<Vec3>& x0, const std::vector<Vec3>& x1) {
-  out_.vertex_face.clear();
-  out_.edge_edge.clear();
+  vf_keys_.clear();
+  ee_keys_.clear();
   tri_pairs_.clear();
-  tests_ = kinetic_pairs_ = 0;
-  vbox_.resize(x0.size());
+  tests_ = 0;
+  frames_.resize(x0.size());
+  boxes_.resize(x0.size());
+  FloatBox* boxes = boxes_.data();
   for (std::size_t v = 0; v < x0.size(); ++v) {
-    point_box(vbox_[v].b0, x0[v]);
-    point_box(vbox_[v].b1, x1[v]);
-  }
-  ebox_.resize(edges_.size());
-  for (std::size_t e = 0; e < edges_.size(); ++e) {
-    ebox_[e] = vbox_[edges_[e][0]];
-    extend(ebox_[e].b0, x0[edges_[e][1]]);
-    extend(ebox_[e].b1, x1[edges_[e][1]]);
-  }
-  tbox_.resize(tris_.size());
-  for (std::size_t t = 0; t < tris_.size(); ++t) {
-    tbox_[t] = vbox_[tris_[t][0]];
-    for (int k = 1; k < 3; ++k) {
-      extend(tbox_[t].b0, x0[tris_[t][k]]);
-      extend(tbox_[t].b1, x1[tris_[t][k]]);
+    for (int c = 0; c < 3; ++c) {
+      frames_[v].x0[c] = x0[v][c];
+      frames_[v].x1[c] = x1[v][c];
+      boxes[v].lo[c] = float_down(std::min(x0[v][c], x1[v][c]));
+      boxes[v].hi[c] = float_up(std::max(x0[v][c], x1[v][c]));
     }
+    boxes[v].lo[3] = boxes[v].hi[3] = 0.0f;
   }
   // The tree sees the motion in a frame moving with the mean displacement D: contact is the
   // same when every point at time t is moved by -t D, and the tree's float boxes are rounded
-  // outward by far more than the rounding of x1 - D.
+  // outward by far more than the rounding of x1 - D. It leaves out the pairs sharing a vertex
+  // (listed once from the topology) and those whose kinetic boxes never meet.
   Vec3 mean = Vec3::Zero();
   for (std::size_t v = 0; v < x0.size(); ++v) mean += x1[v] - x0[v];
   if (!x0.empty()) mean /= static_cast<double>(x0.size());
   moved_.resize(x1.size());
   for (std::size_t v = 0; v < x1.size(); ++v) moved_[v] = x1[v] - mean;
   bvh_.refit(x0, moved_);
-  bvh_.overlapping_pairs(tri_pairs_);  // pairs sharing no vertex; neighbours are listed
-  for (const auto& p : tri_pairs_) test_pair(p[0], p[1], x0, x1);
-  for (const auto& [v, f] : near_vf_) {
-    if (!may_touch(vbox_[v], tbox_[f])) continue;
-    ++tests_;
-    if (run(vertex_face_query(x0, x1, v, tris_[f]))) out_.vertex_face.push_back({v, f});
+  bvh_.moving_pairs(tri_pairs_);
+  // The pairs' records and their corners' boxes are scattered: fetch them ahead (records 16
+  // pairs ahead, the boxes of the corners they name 8 ahead).
+  const std::size_t np = tri_pairs_.size();
+  for (std::size_t k = 0; k < np; ++k) {
+    if (k + 16 < np) {
+      __builtin_prefetch(&records_[tri_pairs_[k + 16][0]]);
+      __builtin_prefetch(&records_[tri_pairs_[k + 16][1]]);
+    }
+    if (k + 8 < np) {
+      for (int side = 0; side < 2; ++side)
+        for (int c = 0; c < 3; ++c) __builtin_prefetch(&boxes[records_[tri_pairs_[k + 8][side]].v[c]]);
+    }
+    test_pair(tri_pairs_[k][0], tri_pairs_[k][1], x0, x1);
   }
-  for (const auto& [ea, eb] : near_ee_) {
-    if (!may_touch(ebox_[ea], ebox_[eb])) continue;
-    ++tests_;
-    if (run(edge_edge_query(x0, x1, edges_[ea], edges_[eb]))) out_.edge_edge.push_back({edges_[ea], edges_[eb]});
-  }
-  sort_contacts(out_);
+  sift_neighbours(x0, x1);
+  flush(x0, x1);
+  emit_sorted();
   return out_;
+}
+
+void ContinuousSelfCollisionDetector::emit_sorted() {
+  // Sorting the packed keys sorts the pairs: (v, f) lexicographically, and edge pairs by their
+  // ids, which follow the edges' lexicographic order.
+  std::sort(vf_keys_.begin(), vf_keys_.end());
+  std::sort(ee_keys_.begin(), ee_keys_.end());
+  out_.vertex_face.resize(vf_keys_.size());
+  for (std::size_t k = 0; k < vf_keys_.size(); ++k)
+    out_.vertex_face[k] = {static_cast<int>(vf_keys_[k] >> 32), static_cast<int>(vf_keys_[k] & 0xFFFFFFFFu)};
+  out_.edge_edge.resize(ee_keys_.size());
+  for (std::size_t k = 0; k < ee_keys_.size(); ++k)
+    out_.edge_edge[k] = {edges_[ee_keys_[k] >> 32], edges_[ee_keys_[k] & 0xFFFFFFFFu]};
 }
 
 ContinuousContacts continuous_self_collision(const std::vector<Vec3>& x0, const std::vector<Vec3>& x1,

@@ -15,11 +15,15 @@
 ///    first that has it), and a primitive pair is tested only from the triangle pair of its
 ///    owners, so each pair is tested once. Owners that share a vertex (neighbours) are known
 ///    from the topology: their feature pairs are listed once at construction. The others come
-///    from the triangle box tree (triangle_bvh.h) refitted on swept boxes (each triangle's box
-///    over both frames, which contains its owned features' at every time, in a frame moving
-///    with the mesh's mean displacement, which changes no contact), pairs whose kinetic boxes
-///    never meet dropped. Then the primitives' own swept and kinetic boxes (the first stages
-///    of core's test, ccd_pipeline.h, on the same numbers: the same decisions), then the test.
+///    from the triangle box tree (triangle_bvh.h) refitted on both frames (in a frame moving
+///    with the mesh's mean displacement, which changes no contact): pairs whose swept boxes
+///    overlap and whose kinetic boxes may meet (a certified single-precision test; each
+///    triangle's boxes contain its owned features' at every time). Feature pairs whose swept
+///    boxes, rounded outward to floats, overlap are queued (disjoint ones ccd's stage 2 would
+///    reject), and the first stages of core's test run on them in batches, several per SIMD
+///    register (ccd_batch_stages.h: swept and kinetic boxes, the coplanarity cubic, then the
+///    root of ccd's time search; bit for bit ccd's own decisions on the same numbers); the test
+///    itself runs on the pairs they leave open, from the stage after the boxes.
 /// Output: vertex_face as (v, f), 0-based vertex and face indices, sorted; edge_edge as
 /// ((a, b), (c, d)) with a < b, c < d and (a, b) < (c, d), sorted lexicographically.
 /// Positions must be finite; both frames have the same size; no triangle repeats an index.
@@ -29,6 +33,7 @@
 
 #include <array>
 #include <cstddef>
+#include <cstdint>
 #include <functional>
 #include <vector>
 
@@ -74,36 +79,83 @@ class ContinuousSelfCollisionDetector {
   /// test, in the last detect().
   std::size_t last_triangle_pairs() const { return tri_pairs_.size(); }
   std::size_t last_tests() const { return tests_; }
-  /// Triangle pairs whose kinetic boxes may meet (their features were examined).
-  std::size_t last_kinetic_pairs() const { return kinetic_pairs_; }
+  /// Triangle pairs whose kinetic boxes may meet (their features were examined): the tree's
+  /// pairs, whose kinetic boxes it already tests.
+  std::size_t last_kinetic_pairs() const { return tri_pairs_.size(); }
+
+ /// The widths of core's batched first stages (core/geometry/ccd_batch_stages.h): 0 the
+  /// widest this CPU runs (default), or 2, 4, 8 when available. The output does not depend on
+  /// it; tests compare.
+  void set_simd_width(int width) { width_ = width; }
 
  private:
-  /// The features one triangle owns: up to three vertices and three edges (ids into edges_).
-  struct Owned {
-    int vertex[3], edge[3];
-    int vertices = 0, edge_count = 0;
+  /// A triangle and the features it owns (the first triangle that has a vertex or an edge owns
+  /// it): bit k of owns_vertex for corner v[k], bit k of owns_edge for edge k, (v[k], v[k+1 mod 3]),
+  /// whose id is edge[k].
+  struct TriangleRecord {
+    int v[3];
+    int edge[3];
+    unsigned owns_vertex = 0, owns_edge = 0;
   };
-  /// A primitive's boxes at the two frames (lo xyz, hi xyz each).
-  struct Boxes {
-    double b0[6], b1[6];
+  /// A vertex's positions at both frames, in one cache line.
+  struct alignas(64) VertexFrames {
+    double x0[3], x1[3];
   };
+  /// A swept box (over both frames) rounded outward to floats (core/geometry/outward_float.h):
+  /// it contains the double-precision swept box, so boxes disjoint in floats are disjoint in
+  /// doubles, and ccd's stage 2 rejects their pair. The fourth lane is padding (0).
+  struct alignas(16) FloatBox {
+    float lo[4], hi[4];
+  };
+  static FloatBox merged(const FloatBox& a, const FloatBox& b);
+  /// Closed boxes overlap (touching counts).
+  static bool overlap(const FloatBox& a, const FloatBox& b);
+  /// Primitive pairs of one kind waiting for the batched first stages: the query's points
+  /// (ccd_query.h order) and the pair's output key, `count` of them.
+  struct Pending {
+    std::array<std::array<int, 4>, 256> points;
+    std::array<std::uint64_t, 256> keys;
+    int count = 0;
+  };
+  /// The feature pairs of tree pair (i, j) whose swept boxes overlap, queued.
   void test_pair(int i, int j, const std::vector<Vec3>& x0, const std::vector<Vec3>& x1);
-  /// Fills near_vf_, near_ee_ with the feature pairs of triangles that share a vertex.
+  /// Queues one primitive pair when `keep`; runs the queue when it is full.
+  void push(CcdKind kind, const std::array<int, 4>& points, std::uint64_t key, bool keep, const std::vector<Vec3>& x0,
+            const std::vector<Vec3>& x1);
+  /// Runs both queues.
+  void flush(const std::vector<Vec3>& x0, const std::vector<Vec3>& x1);
+  /// The first stages on n queued pairs, then the test on those they leave open; keys of
+  /// pairs the test accepts go to vf_keys_ / ee_keys_.
+  void sift(CcdKind kind, const std::array<int, 4>* points, const std::uint64_t* keys, int n,
+            const std::vector<Vec3>& x0, const std::vector<Vec3>& x1);
+  /// Queues the listed pairs of features of neighbouring owners whose swept boxes overlap.
+  void sift_neighbours(const std::vector<Vec3>& x0, const std::vector<Vec3>& x1);
+  /// Fills the near_ lists with the feature pairs of triangles that share a vertex.
   void list_neighbour_features(int vertex_count);
-  /// The test's answer on a query whose boxes may_touch already accepted.
+  /// The test's answer on a query whose box stages were passed.
   bool run(const CcdQuery& q) const;
+  /// Sorts the keys of the pairs found and writes them out as pairs into out_.
+  void emit_sorted();
 
   std::vector<std::array<int, 3>> tris_;
   std::vector<MeshEdge> edges_;
-  std::vector<Owned> owned_;
+  std::vector<TriangleRecord> records_;
   CcdTest test_;
   TriangleBvh bvh_;
   std::vector<std::array<int, 2>> tri_pairs_;
-  std::vector<Boxes> vbox_, ebox_, tbox_;  ///< per vertex, edge, triangle
-  std::vector<Vec3> moved_;                 ///< x1 in the frame of the mean displacement
-  std::vector<std::array<int, 2>> near_vf_;  ///< (vertex, face) of neighbouring owners
-  std::vector<std::array<int, 2>> near_ee_;  ///< (edge, edge) ids of neighbouring owners, in pair order
-  std::size_t tests_ = 0, kinetic_pairs_ = 0;
+  std::vector<VertexFrames> frames_;  ///< per vertex, this detect()'s positions
+  std::vector<FloatBox> boxes_;       ///< per vertex, its swept box rounded outward
+  std::vector<Vec3> moved_;           ///< x1 in the frame of the mean displacement
+  /// Pairs of features of neighbouring owners, as query points and keys (vertex-face: v << 32
+  /// | f; edge-edge: ids ascending), in pair order.
+  std::vector<std::array<int, 4>> near_vf_points_, near_ee_points_;
+  std::vector<std::uint64_t> near_vf_keys_, near_ee_keys_;
+  Pending pending_[2];                ///< [0] vertex-face, [1] edge-edge
+  std::vector<std::uint8_t> verdict_;  ///< the first stages' verdicts of one chunk
+  int width_ = 0;
+  std::size_t tests_ = 0;
+  std::vector<std::uint64_t> vf_keys_;  ///< pairs found: v << 32 | f
+  std::vector<std::uint64_t> ee_keys_;  ///< pairs found: edge id << 32 | edge id, ids ascending
   ContinuousContacts out_;
 };
 

@@ -1,6 +1,7 @@
 #include "core/cloth/triangle_bvh.h"
 
 #include "core/platform/simd_level.h"
+#include "core/geometry/outward_float.h"
 
 #include <algorithm>
 #include <cfloat>
@@ -23,23 +24,6 @@ namespace tecido {
 
 namespace {
 
-// Outward rounding of a double to float without branches. (float)d is within half an ulp of
-// d; moving it away by |f| 2^-23 + 2^-126 (at least one ulp of f, and at least the smallest
-// normal float) gives a float on the far side of d, whatever the rounding of the subtraction
-// itself (the exact result lies at least one ulp beyond f, and f +- ulp is representable).
-// Everything is clamped to [-FLT_MAX, FLT_MAX]: clamping is monotone, so two intervals that
-// overlap still overlap after it, the boxes stay finite, and the empty lanes' inverted
-// infinite boxes (lo = +inf, hi = -inf) can never overlap one.
-constexpr double kFloatMax = FLT_MAX;
-inline float float_down(double d) {
-  const float f = static_cast<float>(std::min(std::max(d, -kFloatMax), kFloatMax));
-  return std::max(f - (std::fabs(f) * 0x1p-23f + FLT_MIN), -FLT_MAX);
-}
-inline float float_up(double d) {
-  const float f = static_cast<float>(std::min(std::max(d, -kFloatMax), kFloatMax));
-  return std::min(f + (std::fabs(f) * 0x1p-23f + FLT_MIN), FLT_MAX);
-}
-
 constexpr float kInf = std::numeric_limits<float>::infinity();
 
 /// In a 4 x 4 lane mask (bit 4k + l: lane k of one node, lane l of the other), the bits with
@@ -51,7 +35,9 @@ static_assert(TriangleBvh::kWidth == 4, "kLaterLanes and the SSE paths assume fo
 inline int lowest_bit(unsigned m) { return __builtin_ctz(m); }
 
 #if TECIDO_BVH_AVX512
-#define TECIDO_BVH_TARGET_AVX512 __attribute__((target("avx512f")))
+// fp-contract off: AVX-512F has fused multiply-add, which GCC would otherwise form in the
+// kinetic test (its default is -ffp-contract=fast), giving other roundings than the SSE2 path.
+#define TECIDO_BVH_TARGET_AVX512 __attribute__((target("avx512f"), optimize("fp-contract=off")))
 // The 16 lanes of a 4 x 4 mask: lane 4k + l pairs lane k of node a with lane l of node b. a's
 // row of four is repeated (k = lane / 4), b's row is tiled (l = lane % 4). (The maskz_ forms
 // with a full mask: GCC 12's plain broadcast/permutexvar trip -Wuninitialized.)
@@ -98,6 +84,37 @@ TECIDO_BVH_TARGET_AVX512 unsigned leaf_mask16_avx512(const float* alo, const flo
   return box_mask16_avx512(alo, ahi, blo, bhi) & ~static_cast<unsigned>(share) & 0xFFFFu;
 }
 
+/// kinetic_lanes on the 16 lane pairs at once (the same operations lane by lane as
+/// kinetic_row_sse2 below; see kinetic_lanes for the method). a and b point at Frames lo/hi.
+TECIDO_BVH_TARGET_AVX512 unsigned kinetic_mask16_avx512(const float* alo, const float* ahi, const float* blo,
+                                                         const float* bhi) {
+  const __m512 zero = _mm512_setzero_ps();
+  __m512 lower = zero, upper = _mm512_set1_ps(1.0f);
+  __mmask16 reject = 0;
+  for (int c = 0; c < 3; ++c) {
+    for (int k = 0; k < 2; ++k) {
+      // Constraint k of axis c at frame f: hi_b - lo_a (k = 0) or hi_a - lo_b (k = 1).
+      __m512 v[2];
+      for (int f = 0; f < 2; ++f) {
+        const int row = 12 * f + 4 * c;
+        v[f] = k == 0 ? _mm512_sub_ps(tile4(bhi + row), repeat4(alo + row)) : _mm512_sub_ps(repeat4(ahi + row), tile4(blo + row));
+      }
+      const __m512 m = _mm512_add_ps(_mm512_mul_ps(_mm512_maskz_max_ps(0xFFFF, _mm512_abs_ps(v[0]), _mm512_abs_ps(v[1])),
+                                                   _mm512_set1_ps(0x1p-21f)), _mm512_set1_ps(FLT_MIN));
+      const __m512 a = _mm512_add_ps(v[0], m), e = _mm512_add_ps(v[1], m);
+      const __mmask16 rising = _mm512_cmp_ps_mask(a, zero, _CMP_LT_OQ), e_neg = _mm512_cmp_ps_mask(e, zero, _CMP_LT_OQ);
+      reject = static_cast<__mmask16>(reject | (rising & e_neg));
+      const __mmask16 falling = static_cast<__mmask16>(~rising & e_neg);
+      const __m512 t = _mm512_div_ps(a, _mm512_sub_ps(a, e));
+      const __m512 lo = _mm512_sub_ps(_mm512_mul_ps(t, _mm512_set1_ps(1.0f - 0x1p-20f)), _mm512_set1_ps(0x1p-100f));
+      const __m512 hi = _mm512_add_ps(_mm512_mul_ps(t, _mm512_set1_ps(1.0f + 0x1p-20f)), _mm512_set1_ps(0x1p-100f));
+      lower = _mm512_mask_max_ps(lower, rising, lower, lo);
+      upper = _mm512_mask_min_ps(upper, falling, upper, hi);
+    }
+  }
+  const __mmask16 disjoint = static_cast<__mmask16>(reject | _mm512_cmp_ps_mask(lower, upper, _CMP_GT_OQ));
+  return ~static_cast<unsigned>(disjoint) & 0xFFFFu;
+}
 #endif
 
 }  // namespace
@@ -227,18 +244,66 @@ void TriangleBvh::refit(const std::vector<Vec3>& x) {
 void TriangleBvh::refit(const std::vector<Vec3>& x0, const std::vector<Vec3>& x1) {
   if (nodes_.empty()) return;
   const std::size_t nv = x0.size();
-  vlo_.resize(nv);
-  vhi_.resize(nv);
+  fbounds_.resize(nv);
   for (std::size_t v = 0; v < nv; ++v) {
+    FrameBounds& b = fbounds_[v];
     for (int d = 0; d < 3; ++d) {
-      // float_down / float_up are monotone: the bounds of the min / max are the min / max of
-      // the bounds, so this contains both frames' outward boxes.
-      vlo_[v][d] = float_down(std::min(x0[v][d], x1[v][d]));
-      vhi_[v][d] = float_up(std::max(x0[v][d], x1[v][d]));
+      b.lo[0][d] = float_down(x0[v][d]);
+      b.hi[0][d] = float_up(x0[v][d]);
+      b.lo[1][d] = float_down(x1[v][d]);
+      b.hi[1][d] = float_up(x1[v][d]);
     }
-    vlo_[v][3] = vhi_[v][3] = 0.0f;
+    b.lo[0][3] = b.hi[0][3] = b.lo[1][3] = b.hi[1][3] = 0.0f;
   }
-  refit_from_vertex_bounds();
+  refit_frames();
+}
+
+void TriangleBvh::refit_frames() {
+  // One bottom-up sweep: each lane's boxes at both frames, and its swept box (their union:
+  // float_down and float_up are monotone, so this is the outward box of both frames).
+  frames_.resize(nodes_.size());
+  for (int f = 0; f < 2; ++f) frame_box_[f].resize(nodes_.size());
+  for (std::size_t k = nodes_.size(); k-- > 0;) {
+    Node& nd = nodes_[k];
+    Frames& fr = frames_[k];
+    for (int lane = 0; lane < kWidth; ++lane) {
+      float lo[2][4] = {{kInf, kInf, kInf, kInf}, {kInf, kInf, kInf, kInf}};  // empty lanes: inverted
+      float hi[2][4] = {{-kInf, -kInf, -kInf, -kInf}, {-kInf, -kInf, -kInf, -kInf}};
+      if (lane < nd.count) {
+        for (int f = 0; f < 2; ++f) {
+          for (int d = 0; d < 3; ++d) {
+            if (nd.leaf) {
+              const FrameBounds& a = fbounds_[nd.lv.v[0][lane]];
+              const FrameBounds& b = fbounds_[nd.lv.v[1][lane]];
+              const FrameBounds& c = fbounds_[nd.lv.v[2][lane]];
+              lo[f][d] = std::min(a.lo[f][d], std::min(b.lo[f][d], c.lo[f][d]));
+              hi[f][d] = std::max(a.hi[f][d], std::max(b.hi[f][d], c.hi[f][d]));
+            } else {
+              lo[f][d] = frame_box_[f][nd.child[lane]].lo[d];
+              hi[f][d] = frame_box_[f][nd.child[lane]].hi[d];
+            }
+          }
+        }
+      }
+      for (int d = 0; d < 3; ++d) {
+        for (int f = 0; f < 2; ++f) {
+          fr.lo[f][d][lane] = lo[f][d];
+          fr.hi[f][d][lane] = hi[f][d];
+        }
+        nd.lo[d][lane] = std::min(lo[0][d], lo[1][d]);
+        nd.hi[d][lane] = std::max(hi[0][d], hi[1][d]);
+      }
+    }
+    for (int d = 0; d < 3; ++d) {
+      for (int f = 0; f < 2; ++f) {
+        Box& box = frame_box_[f][k];
+        box.lo[d] = std::min(std::min(fr.lo[f][d][0], fr.lo[f][d][1]), std::min(fr.lo[f][d][2], fr.lo[f][d][3]));
+        box.hi[d] = std::max(std::max(fr.hi[f][d][0], fr.hi[f][d][1]), std::max(fr.hi[f][d][2], fr.hi[f][d][3]));
+      }
+      node_box_[k].lo[d] = std::min(frame_box_[0][k].lo[d], frame_box_[1][k].lo[d]);
+      node_box_[k].hi[d] = std::max(frame_box_[0][k].hi[d], frame_box_[1][k].hi[d]);
+    }
+  }
 }
 
 void TriangleBvh::refit_from_vertex_bounds() {
@@ -319,6 +384,93 @@ unsigned TriangleBvh::lanes_sharing(const LeafVerts& b, int v0, int v1, int v2) 
 #endif
 }
 
+namespace {
+
+#if defined(__SSE2__)
+/// kinetic_lanes for lane k of a against the four lanes of b: bit l set when they may meet.
+unsigned kinetic_row_sse2(const float (*alo)[3][4], const float (*ahi)[3][4], const float (*blo)[3][4],
+                          const float (*bhi)[3][4], int k) {
+  const __m128 zero = _mm_setzero_ps(), sign = _mm_set1_ps(-0.0f);
+  __m128 lower = zero, upper = _mm_set1_ps(1.0f), reject = zero;
+  for (int c = 0; c < 3; ++c) {
+    for (int j = 0; j < 2; ++j) {
+      __m128 v[2];
+      for (int f = 0; f < 2; ++f) {
+        v[f] = j == 0 ? _mm_sub_ps(_mm_loadu_ps(bhi[f][c]), _mm_set1_ps(alo[f][c][k]))
+                      : _mm_sub_ps(_mm_set1_ps(ahi[f][c][k]), _mm_loadu_ps(blo[f][c]));
+      }
+      const __m128 m = _mm_add_ps(_mm_mul_ps(_mm_max_ps(_mm_andnot_ps(sign, v[0]), _mm_andnot_ps(sign, v[1])),
+                                             _mm_set1_ps(0x1p-21f)), _mm_set1_ps(FLT_MIN));
+      const __m128 a = _mm_add_ps(v[0], m), e = _mm_add_ps(v[1], m);
+      const __m128 rising = _mm_cmplt_ps(a, zero), e_neg = _mm_cmplt_ps(e, zero);
+      reject = _mm_or_ps(reject, _mm_and_ps(rising, e_neg));
+      const __m128 falling = _mm_andnot_ps(rising, e_neg);
+      const __m128 t = _mm_div_ps(a, _mm_sub_ps(a, e));
+      const __m128 lo = _mm_sub_ps(_mm_mul_ps(t, _mm_set1_ps(1.0f - 0x1p-20f)), _mm_set1_ps(0x1p-100f));
+      const __m128 hi = _mm_add_ps(_mm_mul_ps(t, _mm_set1_ps(1.0f + 0x1p-20f)), _mm_set1_ps(0x1p-100f));
+      lower = _mm_or_ps(_mm_and_ps(rising, _mm_max_ps(lower, lo)), _mm_andnot_ps(rising, lower));
+      upper = _mm_or_ps(_mm_and_ps(falling, _mm_min_ps(upper, hi)), _mm_andnot_ps(falling, upper));
+    }
+  }
+  const __m128 disjoint = _mm_or_ps(reject, _mm_cmpgt_ps(lower, upper));
+  return ~static_cast<unsigned>(_mm_movemask_ps(disjoint)) & 0xFu;
+}
+#endif
+
+}  // namespace
+
+// The kinetic boxes of two lanes never meet (Method): on each axis, overlap at time t is two
+// linear constraints g(t) = (1 - t) g0 + t g1 >= 0 (hi_b - lo_a and hi_a - lo_b, the kinetic
+// boxes interpolating the boxes at the frames; ccd_kinetic_boxes.h). In single precision:
+//  - v0 = fl(g0): the floats' exact difference rounded once, |v0 - g0| <= 2^-24 |g0| (exact
+//    when it underflows); a = fl(v0 + m), m = fl(fl(2^-21 max(|v0|, |v1|)) + FLT_MIN), is at
+//    least g0: m >= 2^-21 max (1 - 2^-24) (the product can only lose 2^-150 to underflow, which
+//    FLT_MIN more than covers), and fl(v0 + m) >= v0 + m - 2^-24 |v0 + m|, so
+//    a >= v0 + 2^-21 |v0| (1 - 2^-24)^2 - 2^-24 |v0| >= g0. Likewise e >= g1. So the line
+//    through (0, a) and (1, e) lies above g on [0, 1]: where it is negative, so is g.
+//  - a < 0 and e < 0: g < 0 throughout, never overlapping. a < 0 <= e: overlap needs
+//    t >= t* = a / (a - e); computed t = t* (1 + d2) / (1 + d1) (a - e adds magnitudes, one
+//    rounding; the division one more), so fl(t (1 - 2^-20)) < t* when t is normal, and the
+//    final - 2^-100 makes the bound negative when t underflows (absolute error 2^-150).
+//    a >= 0 > e: t <= t*, bounded above by fl(t (1 + 2^-20)) + 2^-100 the same way.
+//  - disjoint when the largest lower bound exceeds the smallest upper bound (or a constraint
+//    is negative at both frames): no time in [0, 1] satisfies all six. A NaN or infinity
+//    (boxes near FLT_MAX, empty lanes) makes a comparison false, which never rejects.
+// The SSE2 and AVX-512 paths run the same operations lane by lane: the same mask.
+unsigned TriangleBvh::kinetic_lanes(const Frames& a, const Frames& b, bool wide) {
+#if TECIDO_BVH_AVX512
+  if (wide) return kinetic_mask16_avx512(&a.lo[0][0][0], &a.hi[0][0][0], &b.lo[0][0][0], &b.hi[0][0][0]);
+#else
+  (void)wide;
+#endif
+#if defined(__SSE2__)
+  unsigned m = 0;
+  for (int k = 0; k < kWidth; ++k) m |= kinetic_row_sse2(a.lo, a.hi, b.lo, b.hi, k) << (kWidth * k);
+  return m;
+#else
+  (void)a;
+  (void)b;
+  return 0xFFFFu;  // no single-precision test without SSE: every pair may meet
+#endif
+}
+
+unsigned TriangleBvh::kinetic_if_apart(const Frames& a, const Frames& b, unsigned lanes, bool wide) {
+  // Lanes whose boxes overlap at a frame are kept by kinetic_lanes too (every constraint is
+  // nonnegative at that end: no bound on t from the other), so when no lane of `lanes` is
+  // apart at both frames the answer is `lanes` without it. A speed choice of the wide path
+  // (two 16-lane compares); the mask is the same either way.
+  unsigned apart = lanes;
+#if TECIDO_BVH_AVX512
+  if (wide) {
+    apart &= ~box_mask16_avx512(a.lo[0][0], a.hi[0][0], b.lo[0][0], b.hi[0][0]);
+    apart &= ~box_mask16_avx512(a.lo[1][0], a.hi[1][0], b.lo[1][0], b.hi[1][0]);
+    return apart ? (lanes & ~apart) | (apart & kinetic_lanes(a, b, wide)) : lanes;
+  }
+#endif
+  return lanes & kinetic_lanes(a, b, wide);
+}
+
+template <bool Kinetic>
 inline void TriangleBvh::leaf_pairs(int a, int b, bool wide, std::vector<std::array<int, 2>>& out) const {
   const Node& na = nodes_[a];
   const Node& nb = nodes_[b];
@@ -341,6 +493,7 @@ inline void TriangleBvh::leaf_pairs(int a, int b, bool wide, std::vector<std::ar
     }
   }
   if (a == b) mask &= kLaterLanes;
+  if (Kinetic && mask) mask &= kinetic_lanes(frames_[a], frames_[b], wide);
   for (; mask; mask &= mask - 1) {
     const int bit = lowest_bit(mask);
     const int i = na.child[bit / kWidth], j = nb.child[bit % kWidth];
@@ -352,11 +505,16 @@ inline void TriangleBvh::leaf_pairs(int a, int b, bool wide, std::vector<std::ar
   }
 }
 
-void TriangleBvh::overlapping_pairs(std::vector<std::array<int, 2>>& out) {
+void TriangleBvh::overlapping_pairs(std::vector<std::array<int, 2>>& out) { pairs<false>(out); }
+
+void TriangleBvh::moving_pairs(std::vector<std::array<int, 2>>& out) { pairs<true>(out); }
+
+template <bool Kinetic>
+void TriangleBvh::pairs(std::vector<std::array<int, 2>>& out) {
   if (nodes_.empty()) return;
   const bool wide = use_wide_ && wide_kernel_available();
   if (nodes_[0].leaf) {
-    leaf_pairs(0, 0, wide, out);
+    leaf_pairs<Kinetic>(0, 0, wide, out);
     return;
   }
   // Node pairs still to visit are pairs of internal nodes, or a leaf with an internal node: a
@@ -403,12 +561,13 @@ void TriangleBvh::overlapping_pairs(std::vector<std::array<int, 2>>& out) {
           mask |= lanes_overlapping(nb, lo, hi) << (kWidth * k);
         }
       }
+      if (Kinetic && mask) mask &= kinetic_if_apart(frames_[a], frames_[b], mask, wide);
       if (a == b) {
         mask &= kLaterLanes;
         for (int k = 0; k < na.count; ++k) {
           const int c = na.child[k];
           if ((na.leaf_kids >> k) & 1u) {
-            leaf_pairs(c, c, wide, out);
+            leaf_pairs<Kinetic>(c, c, wide, out);
           } else {
             stack[top++] = pack(c, c);
           }
@@ -418,7 +577,7 @@ void TriangleBvh::overlapping_pairs(std::vector<std::array<int, 2>>& out) {
         const int bit = lowest_bit(mask);
         const int k = bit / kWidth, l = bit % kWidth;
         if ((na.leaf_kids >> k) & (nb.leaf_kids >> l) & 1u) {
-          leaf_pairs(na.child[k], nb.child[l], wide, out);
+          leaf_pairs<Kinetic>(na.child[k], nb.child[l], wide, out);
         } else {
           stack[top++] = pack(na.child[k], nb.child[l]);
         }
@@ -429,7 +588,7 @@ void TriangleBvh::overlapping_pairs(std::vector<std::array<int, 2>>& out) {
       for (unsigned m = lanes_overlapping(nb, node_box_[a].lo, node_box_[a].hi); m; m &= m - 1) {
         const int l = lowest_bit(m);
         if ((nb.leaf_kids >> l) & 1u) {
-          leaf_pairs(a, nb.child[l], wide, out);
+          leaf_pairs<Kinetic>(a, nb.child[l], wide, out);
         } else {
           stack[top++] = pack(a, nb.child[l]);
         }
@@ -439,7 +598,7 @@ void TriangleBvh::overlapping_pairs(std::vector<std::array<int, 2>>& out) {
       for (unsigned m = lanes_overlapping(na, node_box_[b].lo, node_box_[b].hi); m; m &= m - 1) {
         const int k = lowest_bit(m);
         if ((na.leaf_kids >> k) & 1u) {
-          leaf_pairs(na.child[k], b, wide, out);
+          leaf_pairs<Kinetic>(na.child[k], b, wide, out);
         } else {
           stack[top++] = pack(na.child[k], b);
         }

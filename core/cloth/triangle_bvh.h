@@ -46,13 +46,22 @@ class TriangleBvh {
 
   /// Recomputes every box as the swept box of linear motion from x0 to x1: the union of the
   /// boxes at both frames, which contains the triangle at every time in between (continuous
-  /// collision, core/cloth/continuous_self_collision.h). Finite positions, same sizes.
+  /// collision, core/cloth/continuous_self_collision.h). Finite positions, same sizes. Keeps
+  /// the boxes at each frame as well, for moving_pairs().
   void refit(const std::vector<Vec3>& x0, const std::vector<Vec3>& x1);
 
   /// Appends to `out` every pair (i, j) of triangle ids, i < j, whose closed boxes overlap
   /// (touching counts) and that share no vertex index; each pair once, in a deterministic
   /// (traversal) order. Uses the boxes of the last build()/refit().
   void overlapping_pairs(std::vector<std::array<int, 2>>& out);
+
+  /// After the two-frame refit: the pairs of overlapping_pairs() less those whose kinetic
+  /// boxes never meet (the boxes at t = 0 and t = 1 interpolated in time, as in
+  /// core/geometry/ccd_kinetic_boxes.h; each triangle lies in its kinetic box at every time,
+  /// so such a pair cannot touch), decided by a certified test in single precision
+  /// (kinetic_lanes in triangle_bvh.cpp) on the lanes of leaf pairs and of internal node
+  /// pairs (a node's boxes at each frame contain its triangles'). In the same order.
+  void moving_pairs(std::vector<std::array<int, 2>>& out);
 
   /// The leaf and node-pair masks use one 16-lane AVX-512 pass when the CPU has AVX-512F
   /// (checked at run time), SSE2 otherwise; the output does not depend on the path. Tests can
@@ -83,22 +92,45 @@ class TriangleBvh {
   struct Box {
     float lo[3], hi[3];
   };
+  /// The boxes of a node's lanes at each frame of the two-frame refit: lo[frame][axis][lane].
+  struct alignas(64) Frames {
+    float lo[2][3][kWidth], hi[2][3][kWidth];
+  };
 
   int build_node(int node, int begin, int end, const std::vector<Vec3>& centroid, std::vector<int>& order,
                  const std::vector<std::array<int, 3>>& triangles);
+  /// The traversal of overlapping_pairs (Kinetic false) and moving_pairs (true).
+  template <bool Kinetic>
+  void pairs(std::vector<std::array<int, 2>>& out);
   /// Appends the triangle pairs of leaves a and b (a == b: the leaf with itself).
+  template <bool Kinetic>
   void leaf_pairs(int a, int b, bool wide, std::vector<std::array<int, 2>>& out) const;
+  /// Bit 4k + l set when the kinetic boxes of lane k of a and lane l of b may meet.
+  static unsigned kinetic_lanes(const Frames& a, const Frames& b, bool wide);
+  /// lanes & kinetic_lanes(a, b), skipping the kinetic test when no lane is apart at both
+  /// frames (internal node pairs, where most overlap at a frame).
+  static unsigned kinetic_if_apart(const Frames& a, const Frames& b, unsigned lanes, bool wide);
   /// Bit k set when lane k of node b overlaps box (lo, hi).
   static unsigned lanes_overlapping(const Node& b, const float lo[3], const float hi[3]);
   /// Bit k set when triangle (v0, v1, v2) shares a vertex with lane k's triangle of leaf b.
   static unsigned lanes_sharing(const LeafVerts& b, int v0, int v1, int v2);
   /// Box refit from the per-vertex bounds vlo_, vhi_.
   void refit_from_vertex_bounds();
+  /// Every node's lanes at both frames (frames_) and swept (the nodes' own lo, hi), from the
+  /// per-vertex bounds of each frame, fbounds_.
+  void refit_frames();
 
   std::size_t tri_count_ = 0;
   std::vector<Node> nodes_;          ///< nodes_[0] is the root; children after their parent
   std::vector<Box> node_box_;        ///< each node's own box
   std::vector<std::array<float, 4>> vlo_, vhi_;  ///< per-vertex outward float bounds
+  /// A vertex's outward float bounds at each frame (two-frame refit): lo[frame][axis], pad 0.
+  struct alignas(32) FrameBounds {
+    float lo[2][4], hi[2][4];
+  };
+  std::vector<FrameBounds> fbounds_;
+  std::vector<Frames> frames_;                     ///< per node (two-frame refit)
+  std::vector<Box> frame_box_[2];                  ///< each node's own box per frame
   std::vector<std::uint64_t> stack_;  ///< node pairs still to visit, packed (a | b << 32)
   /// Bound on the stack's size: a pop pushes at most kWidth^2 pairs minus the one it removed,
   /// and a path down the tree of node pairs is at most 2 * depth + 1 long.

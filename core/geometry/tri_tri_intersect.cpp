@@ -2,6 +2,8 @@
 
 #include "core/geometry/orient_predicates.h"
 
+#include "core/platform/simd_level.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -375,10 +377,7 @@ bool tri_tri_intersect(const Triangle& p, const Triangle& q) {
 
 bool tri_tri_reject8_available() {
 #if TECIDO_TT_AVX512
-  static const bool ok = [] {
-    __builtin_cpu_init();
-    return __builtin_cpu_supports("avx512f") != 0;
-  }();
+  static const bool ok = simd_level_allowed(SimdLevel::AVX512);  // the CPU has it and TECIDO_SIMD allows it
   return ok;
 #else
   return false;

@@ -8,6 +8,7 @@
 #include "core/cloth/self_collision.h"
 #include "core/dynamics/simulation.h"
 #include "core/geometry/ccd.h"
+#include "core/geometry/ccd_batch_stages.h"
 
 #include <gtest/gtest.h>
 
@@ -127,6 +128,77 @@ TEST(ContinuousSelfCollision, BroadPhaseMatchesBruteForceOnRandomMeshes) {
     found += total(fast);
   }
   EXPECT_GT(found, 50u);  // the meshes must exercise the test
+}
+
+// The vector widths of the batched first stages this CPU runs (the output must not depend on it).
+std::vector<int> widths() {
+  std::vector<int> w;
+  for (int k : {2, 4, 8})
+    if (ccd_batch_width_available(k)) w.push_back(k);
+  return w;
+}
+
+TEST(ContinuousSelfCollision, BroadPhaseMatchesBruteForceAtEveryWidthAndScale) {
+  // Jittered grids moved at random, scaled by 1e-30 .. 1e30 and moved far off: the batched
+  // stages decide the cubic only where ccd would not rescale, and must agree everywhere.
+  std::mt19937_64 rng(31337);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  Mesh m;
+  append_grid(m, 7, 0.1, 0.0, 0.0, 0.0);
+  for (Vec3& p : m.x) p += 0.03 * Vec3(u(rng), u(rng), u(rng));
+  std::vector<Vec3> x1 = m.x;
+  for (Vec3& p : x1) p += 0.12 * Vec3(u(rng), u(rng), u(rng));
+  std::size_t found = 0;
+  for (double scale : {1e-30, 1e-10, 1.0, 1e10, 1e30}) {
+    for (const Vec3& shift : {Vec3(0, 0, 0), Vec3(3e3, -1e3, 5e2)}) {
+      std::vector<Vec3> a = m.x, b = x1;
+      for (Vec3& p : a) p = scale * (p + shift);
+      for (Vec3& p : b) p = scale * (p + shift);
+      const ContinuousContacts brute = continuous_self_collision_brute(a, b, m.tris);
+      found += total(brute);
+      for (int w : widths()) {
+        ContinuousSelfCollisionDetector det(m.tris, a);
+        det.set_simd_width(w);
+        EXPECT_EQ(det.detect(a, b), brute) << "scale " << scale << " width " << w;
+      }
+    }
+  }
+  EXPECT_GT(found, 100u);
+}
+
+TEST(ContinuousSelfCollision, BroadPhaseMatchesBruteForceOnDegenerateMotion) {
+  // Motions where the cubic vanishes or the boxes touch exactly: no motion at all, a flat
+  // sheet sliding in its own plane (coplanar at all times), a pure translation, triangles
+  // collapsing onto a point, and a sheet folded onto itself exactly.
+  std::mt19937_64 rng(2718);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  Mesh m;
+  append_grid(m, 6, 0.125, 0.0, 0.0, 0.0);
+  std::vector<std::pair<std::vector<Vec3>, std::vector<Vec3>>> motions;
+  std::vector<Vec3> crumpled = m.x;
+  for (Vec3& p : crumpled) p += 0.1 * Vec3(u(rng), u(rng), u(rng));
+  motions.push_back({crumpled, crumpled});  // still
+  std::vector<Vec3> slid = m.x;
+  for (Vec3& p : slid) p += 0.1 * Vec3(u(rng), u(rng), 0.0);
+  motions.push_back({m.x, slid});  // coplanar throughout
+  std::vector<Vec3> moved = crumpled;
+  for (Vec3& p : moved) p += Vec3(0.25, -0.5, 0.125);
+  motions.push_back({crumpled, moved});  // translation
+  std::vector<Vec3> collapsed(m.x.size(), Vec3(0.3125, 0.3125, 0.0));
+  motions.push_back({m.x, collapsed});  // everything onto one point at t = 1
+  std::vector<Vec3> folded = m.x;
+  for (Vec3& p : folded)
+    if (p.x() > 0.3125) p.x() = 0.625 - p.x();  // mirrored onto the other half, exactly
+  motions.push_back({m.x, folded});
+  for (std::size_t k = 0; k < motions.size(); ++k) {
+    const auto& [a, b] = motions[k];
+    const ContinuousContacts brute = continuous_self_collision_brute(a, b, m.tris);
+    for (int w : widths()) {
+      ContinuousSelfCollisionDetector det(m.tris, m.x);
+      det.set_simd_width(w);
+      EXPECT_EQ(det.detect(a, b), brute) << "motion " << k << " width " << w;
+    }
+  }
 }
 
 TEST(ContinuousSelfCollision, BroadPhaseMatchesBruteForceOnTriangleSoups) {
