@@ -1,16 +1,21 @@
-// tecido experiment self-contact [--out DIR] [--threads N] [--quick] [--runs LIST] [--strength F]
-//                                [--scene FILE] [--seed-table FILE] [--elasticity-as stiffness|restitution]
-//                                [--shard i/n]
-// The seed's 72-run self-contact experiment (comparisons/suites/experiment_self_contact.h):
-// writes DIR/experiment.json and DIR/experiment.md. With --shard i/n only the runs whose index
-// % n == i, and only DIR/experiment.json, marked as a shard; `tecido merge` joins the shards.
+// tecido experiment self-contact [--out DIR] [--threads N] [--quick] [--seeds N]
+//                                [--detector core|core-mt|core-rotation[,...]] [--runs LIST]
+//                                [--calibrate] [--calibration FILE] [--no-sensitivity]
+//                                [--scene FILE] [--seed-table FILE]
+//                                [--elasticity-as stiffness|restitution] [--strength F] [--shard i/n]
+// The seed's self-contact experiment as an ensemble, its claims judged by stated rules
+// (comparisons/suites/self_contact/experiment.h): writes DIR/experiment.json and experiment.md
+// (with --calibrate: DIR/calibration.json and calibration.md). With --shard i/n only the cases whose
+// index % n == i, written as DIR/experiment.json (or calibration.json) marked as a shard;
+// `tecido merge` joins the shards.
 #include "comparisons/cli/commands.h"
 #include "comparisons/cli/shard_option.h"
 #include "comparisons/io/atomic_file.h"
 #include "comparisons/io/input_error.h"
-#include "comparisons/suites/experiment_self_contact.h"
+#include "comparisons/suites/self_contact/experiment.h"
+#include "comparisons/suites/self_contact/shards.h"
+#include "comparisons/suites/suite_shard.h"
 
-#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <iostream>
@@ -18,11 +23,12 @@
 #include <sstream>
 #include <thread>
 #include <tuple>
-#include <utility>
 
 namespace tecido::cli {
 
 namespace {
+
+namespace sc = suites::self_contact;
 
 /// "0-7,12,20-23" -> indices.
 std::vector<int> parse_runs(const std::string& list) {
@@ -53,71 +59,87 @@ std::vector<int> parse_runs(const std::string& list) {
   return out;
 }
 
-Command add_experiment(CLI::App& app) {
-  struct Opts {
-    std::string name, out = "out/self-contact", runs, scene, seed_table, elasticity_as = "stiffness", shard;
-    int threads = 0;
-    double strength = std::nan("");  // not given
-    bool quick = false;
-  };
-  auto o = std::make_shared<Opts>();
-  CLI::App* sub = app.add_subcommand("experiment", "Run one of the seed's experiments: self-contact (72 runs, tables 1-3)");
-  sub->add_option("name", o->name, "Experiment name: self-contact")->required();
-  sub->add_option("--out", o->out, "Output directory (experiment.json, experiment.md)")->capture_default_str();
-  sub->add_option("--threads", o->threads, "Worker threads (0 = all cores); results do not depend on it");
-  sub->add_flag("--quick", o->quick, "2 s of simulated time per run instead of 10 (for tests)");
-  sub->add_option("--runs", o->runs, "Only these run indices, e.g. 0-7,12 (default: all 72)");
-  sub->add_option("--scene", o->scene, "Base scene (default data/scenes/seed_fig21_self_contact.json)");
-  sub->add_option("--seed-table", o->seed_table, "The seed's tables (default data/seed_tables/self_contact_share.json)");
-  sub->add_option("--strength", o->strength, "Response force per particle [N] (default: the scene's self_collision.strength)");
-  sub->add_option("--elasticity-as", o->elasticity_as, "What the cloth's elasticity is: stiffness | restitution")
-      ->capture_default_str();
-  sub->add_option("--shard", o->shard, "Only the runs whose index % n == i, e.g. 0/8; join the shards with `tecido merge`");
-  return [o]() {
-    if (o->name != "self-contact") throw io::UsageError("unknown experiment \"" + o->name + "\" (known: self-contact)");
-    if (o->elasticity_as != "stiffness" && o->elasticity_as != "restitution")
-      throw io::UsageError("--elasticity-as must be stiffness or restitution");
-    if (o->threads < 0) throw io::UsageError("--threads must be >= 0");
-    suites::SelfContactOptions opt;
-    opt.scene_path = o->scene.empty() ? std::string(TECIDO_SOURCE_DIR) + "/data/scenes/seed_fig21_self_contact.json" : o->scene;
-    opt.seed_table_path =
-        o->seed_table.empty() ? std::string(TECIDO_SOURCE_DIR) + "/data/seed_tables/self_contact_share.json" : o->seed_table;
-    opt.quick = o->quick;
-    opt.simulated_time = o->quick ? 2.0 : 10.0;
-    opt.threads = o->threads > 0 ? o->threads : std::max(1u, std::thread::hardware_concurrency());
-    opt.elasticity_as = o->elasticity_as;
-    if (!std::isnan(o->strength)) {
-      if (!(o->strength >= 0.0) || !(o->strength <= 1e9)) throw io::UsageError("--strength must be in [0, 1e9]");
-      opt.strength = o->strength;
-    }
-    if (!o->runs.empty()) opt.runs = parse_runs(o->runs);
-    const bool sharded = !o->shard.empty();
-    if (sharded) {
-      std::tie(opt.shard_index, opt.shard_count) = parse_shard(o->shard);
-      std::vector<int> sorted = opt.runs;
-      std::sort(sorted.begin(), sorted.end());
-      if (std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end())
-        throw io::UsageError("--shard: --runs must not name a run twice");
-    }
-    opt.progress = true;
-    const io::Json seed = io::read_json_file(opt.seed_table_path);
-    const auto t0 = std::chrono::steady_clock::now();
-    const auto results = suites::run_self_contact_experiment(opt);
-    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    if (sharded) {
-      io::write_file_atomic(o->out + "/experiment.json", suites::self_contact_shard_json(results, opt));
-    } else {
-      io::write_file_atomic(o->out + "/experiment.json", suites::self_contact_json(results, opt));
-      io::write_file_atomic(o->out + "/experiment.md", suites::self_contact_markdown(results, seed, opt));
-    }
-    int unstable = 0;
-    for (const auto& r : results) unstable += r.status != "ok";
-    std::cout << "self-contact: " << results.size() << " runs in " << seconds << " s on " << opt.threads
-              << " threads; wrote " << o->out << (sharded ? "/experiment.json (shard " + o->shard + ")" : "/experiment.json and experiment.md");
-    if (unstable) std::cout << "; " << unstable << " runs went unstable";
-    std::cout << "\n";
+struct Opts {
+  std::string name, out = "out/self-contact", runs, scene, seed_table, calibration, elasticity_as, shard, detector;
+  int threads = 0, seeds = 0;
+  double strength = std::nan("");  // not given
+  bool quick = false, calibrate = false, no_sensitivity = false;
+};
+
+/// The subcommand's options, all in one place.
+void define_options(CLI::App* sub, Opts& o) {
+  sub->add_option("name", o.name, "Experiment name: self-contact")->required();
+  sub->add_option("--out", o.out, "Output directory (experiment.json and .md; calibration.json and .md)")->capture_default_str();
+  sub->add_option("--threads", o.threads, "Worker threads (0 = all cores); results do not depend on it");
+  sub->add_flag("--quick", o.quick, "2 s per run, 2 seeds, core-mt only, no sensitivity (for CI)");
+  sub->add_option("--seeds", o.seeds, "Runs per cell with independent wind seeds (default 10; 2 with --quick)");
+  sub->add_option("--detector", o.detector,
+                  "What counts as a self-contact frame: core, core-mt, core-rotation, or a list (default core-mt,core)");
+  sub->add_option("--runs", o.runs, "Only these cells, e.g. 0-7,12 (default: all 72; timing claims need all)");
+  sub->add_flag("--calibrate", o.calibrate, "Fit air drag and swirl rate on the calibration cells; writes calibration.json");
+  sub->add_option("--calibration", o.calibration,
+                  "Calibration record (default data/seed_tables/self_contact_calibration.json)");
+  sub->add_flag("--no-sensitivity", o.no_sensitivity, "Skip the readings that vary the seed's open choices");
+  sub->add_option("--scene", o.scene, "Base scene (default data/scenes/seed_fig21_self_contact.json)");
+  sub->add_option("--seed-table", o.seed_table, "The seed's tables (default data/seed_tables/self_contact_share.json)");
+  sub->add_option("--strength", o.strength, "Edge modes' push per particle [N] (default: the scene's)");
+  sub->add_option("--elasticity-as", o.elasticity_as, "What the cloth's elasticity is: stiffness (default) | restitution");
+  sub->add_option("--shard", o.shard, "Only the cases whose index % n == i, e.g. 0/8; join the shards with `tecido merge`");
+}
+
+sc::Options to_options(const Opts& o) {
+  if (o.name != "self-contact") throw io::UsageError("unknown experiment \"" + o.name + "\" (known: self-contact)");
+  if (o.threads < 0) throw io::UsageError("--threads must be >= 0");
+  const std::string data = std::string(TECIDO_SOURCE_DIR) + "/data";
+  sc::Options opt;
+  opt.scene_path = o.scene.empty() ? data + "/scenes/seed_fig21_self_contact.json" : o.scene;
+  opt.seed_table_path = o.seed_table.empty() ? data + "/seed_tables/self_contact_share.json" : o.seed_table;
+  opt.calibration_path = o.calibration.empty() ? data + "/seed_tables/self_contact_calibration.json" : o.calibration;
+  opt.quick = o.quick;
+  opt.seeds = o.seeds;
+  if (!o.detector.empty()) opt.detectors = parse_engine_list(o.detector, {"core", "core-mt", "core-rotation"}, "--detector");
+  if (!o.runs.empty()) opt.cells = parse_runs(o.runs);
+  opt.calibrate = o.calibrate;
+  opt.sensitivity = !o.no_sensitivity;
+  opt.elasticity_as = o.elasticity_as;
+  if (!std::isnan(o.strength)) {
+    if (!(o.strength >= 0.0) || !(o.strength <= 1e9)) throw io::UsageError("--strength must be in [0, 1e9]");
+    opt.strength = o.strength;
+  }
+  opt.threads = o.threads > 0 ? o.threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  if (!o.shard.empty()) std::tie(opt.shard_index, opt.shard_count) = parse_shard(o.shard);
+  opt.progress = true;
+  opt.out_dir = o.out;
+  return opt;
+}
+
+int run(const Opts& o, CLI::App* sub) {
+  if (sub->count("--seeds") && o.seeds < 1) throw io::UsageError("--seeds must be >= 1");
+  const sc::Options opt = to_options(o);
+  const auto plan = std::make_shared<const sc::Plan>(sc::make_plan(opt));
+  const suites::Sweep sweep = sc::make_sweep(plan);
+  const auto indices = suites::shard_indices(sweep.cases, opt.shard_index, opt.shard_count);
+  const auto t0 = std::chrono::steady_clock::now();
+  const auto results = suites::run_sweep_cases(sweep, indices, opt.threads, "self-contact", opt.progress);
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  const std::string file = opt.calibrate ? "calibration.json" : "experiment.json";
+  std::cout << "self-contact: " << indices.size() << " cases in " << seconds << " s on " << opt.threads << " threads; ";
+  if (opt.shard_count > 1 || !o.shard.empty()) {
+    io::write_file_atomic(o.out + "/" + file, sc::shard_json(*plan, indices, results));
+    std::cout << "wrote " << o.out << "/" << file << " (shard " << o.shard << ")\n";
     return 0;
-  };
+  }
+  const sc::Outputs out = sc::assemble(*plan, results);
+  for (const auto& [name, text] : out.files) io::write_file_atomic(o.out + "/" + name, text);
+  std::cout << out.summary << "; wrote " << o.out << "/" << file << " and .md\n";
+  return 0;
+}
+
+Command add_experiment(CLI::App& app) {
+  auto o = std::make_shared<Opts>();
+  CLI::App* sub = app.add_subcommand("experiment", "Run one of the seed's experiments: self-contact (tables 1-3, as an ensemble)");
+  define_options(sub, *o);
+  return [o, sub]() { return run(*o, sub); };
 }
 
 }  // namespace
