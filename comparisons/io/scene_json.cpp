@@ -4,6 +4,7 @@
 #include "core/cloth/cloth_builder.h"
 
 #include <cmath>
+#include <memory>
 #include <random>
 
 namespace tecido::io {
@@ -54,7 +55,7 @@ Wind read_wind(const JsonReader& r, const Json& j, const std::string& w, std::ui
   }
   if (j.contains("random")) {
     if (!wind.swirl) r.fail(child(w, "random"), "needs \"swirl\" (the axis the heading turns about, its mean rate)");
-    wind.random = read_random_heading(r, j["random"], child(w, "random"), seed);
+    wind.random = std::make_shared<const RandomHeading>(read_random_heading(r, j["random"], child(w, "random"), seed));
   }
   return wind;
 }
@@ -145,7 +146,11 @@ Scene scene_from_json(const Json& doc, const std::string& file) {
   if (doc.contains("gravity")) s.forces.gravity = r.vec3(doc["gravity"], "/gravity", 1e6);
   if (doc.contains("air_drag")) s.forces.air_drag = r.number_in(doc["air_drag"], "/air_drag", 0.0, 1e12);
   if (doc.contains("wind")) s.forces.wind = read_wind(r, doc["wind"], "/wind", s.seed);
-  if (s.forces.wind && s.forces.wind->random) s.forces.wind->random->prepare(static_cast<double>(s.steps) * s.dt);
+  if (s.forces.wind && s.forces.wind->random) {
+    auto h = std::make_shared<RandomHeading>(*s.forces.wind->random);
+    h->prepare(static_cast<double>(s.steps) * s.dt);
+    s.forces.wind->random = std::move(h);
+  }
 
   const bool has_planes = doc.contains("planes");
   if (has_planes) {

@@ -12,7 +12,7 @@
 #include "core/geometry/types.h"
 
 #include <cmath>
-#include <optional>
+#include <memory>
 
 namespace tecido {
 
@@ -22,7 +22,8 @@ struct Wind {
   Vec3 axis = Vec3::UnitZ();
   double rate = 0.0;
   double phase = 0.0;
-  std::optional<RandomHeading> random{};  ///< only read when swirl is set
+  /// Only read when swirl is set. Immutable once made (copies of a scene share the knot table).
+  std::shared_ptr<const RandomHeading> random{};
 
   /// The wind force at time t.
   Vec3 at(double t) const {

@@ -4,6 +4,7 @@
 #include "core/cloth/cloth_builder.h"
 
 #include <cmath>
+#include <memory>
 
 namespace tecido::suites::self_contact {
 
@@ -59,9 +60,11 @@ Wind cell_wind(const Wind& base, const Cell& cell, const Interpretation& in, std
   }
   w.force = base.force.normalized() * magnitude;
   w.rate = in.swirl_rate;
-  w.random->seed = wind_seed;
-  w.random->diffusion = in.heading_diffusion;
-  w.random->prepare(T);
+  auto h = std::make_shared<RandomHeading>(*base.random);
+  h->seed = wind_seed;
+  h->diffusion = in.heading_diffusion;
+  h->prepare(T);
+  w.random = std::move(h);
   return w;
 }
 

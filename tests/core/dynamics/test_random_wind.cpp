@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <memory>
 #include <vector>
 
 namespace tecido {
@@ -89,7 +90,7 @@ TEST(RandomWind, WindKeepsItsMagnitudeAndTurnsAboutItsAxis) {
   w.swirl = true;
   w.axis = Vec3(0, 1, 0);
   w.rate = 0.7;
-  w.random = heading(5, 0.2, 0.1, 10.0);
+  w.random = std::make_shared<const RandomHeading>(heading(5, 0.2, 0.1, 10.0));
   for (double t : {0.0, 1.3, 4.44, 9.9}) {
     const Vec3 f = w.at(t);
     EXPECT_NEAR(f.norm(), 0.1, 1e-15);
