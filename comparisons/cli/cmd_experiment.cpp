@@ -1,9 +1,14 @@
-// tecido experiment self-contact [--out DIR] [--threads N] [--quick] [--runs LIST] [--strength F]
-//                                [--scene FILE] [--seed-table FILE] [--elasticity-as stiffness|restitution]
-//                                [--shard i/n] [--max-work W]
-// The seed's 72-run self-contact experiment (comparisons/suites/experiment_self_contact.h):
-// writes DIR/experiment.json and DIR/experiment.md. With --shard i/n only the runs whose index
-// % n == i, and only DIR/experiment.json, marked as a shard; `tecido merge` joins the shards.
+// tecido experiment self-contact [--out DIR] [--threads N] [--quick] [--seeds N]
+//                                [--detector core|core-mt|core-rotation[,...]] [--runs LIST]
+//                                [--calibrate] [--calibration FILE] [--no-sensitivity]
+//                                [--scene FILE] [--seed-table FILE]
+//                                [--elasticity-as stiffness|restitution] [--strength F] [--shard i/n]
+//                                [--max-work W]
+// The seed's self-contact experiment as an ensemble, its claims judged by stated rules
+// (comparisons/suites/self_contact/experiment.h): writes DIR/experiment.json and experiment.md
+// (with --calibrate: DIR/calibration.json and calibration.md). With --shard i/n only the cases whose
+// index % n == i, written as DIR/experiment.json (or calibration.json) marked as a shard;
+// `tecido merge` joins the shards.
 #include "comparisons/cli/commands.h"
 #include "comparisons/cli/option_checks.h"
 #include "comparisons/cli/shard_option.h"
@@ -13,7 +18,9 @@
 #include "comparisons/io/output_dir.h"
 #include "comparisons/io/scene_json.h"
 #include "comparisons/io/work_limit.h"
-#include "comparisons/suites/experiment_self_contact.h"
+#include "comparisons/suites/self_contact/experiment.h"
+#include "comparisons/suites/self_contact/shards.h"
+#include "comparisons/suites/suite_shard.h"
 
 #include <algorithm>
 #include <chrono>
@@ -23,11 +30,15 @@
 #include <sstream>
 #include <thread>
 #include <tuple>
-#include <utility>
 
 namespace tecido::cli {
 
 namespace {
+
+namespace sc = suites::self_contact;
+
+/// Most wind realisations per cell --seeds takes (10^4 x 72 cells of 10 s is already days of CPU).
+constexpr int kMaxSeeds = 10000;
 
 /// "0-7,12,20-23" -> indices, each in [0, count): bounds are checked before a range is expanded.
 std::vector<int> parse_runs(const std::string& list, int count) {
@@ -55,100 +66,109 @@ std::vector<int> parse_runs(const std::string& list, int count) {
   return out;
 }
 
-struct ExperimentOptions {
-  std::string name, out = "out/self-contact", runs, scene, seed_table, elasticity_as = "stiffness", shard;
-  int threads = 0;
-  double strength = 0.0;
+struct Opts {
+  std::string name, out = "out/self-contact", runs, scene, seed_table, calibration, elasticity_as, shard, detector;
+  int threads = 0, seeds = 0;
   double max_work = io::kDefaultMaxWork;
-  bool quick = false;
-  CLI::Option* strength_opt = nullptr;
+  double strength = std::nan("");  // not given
+  bool quick = false, calibrate = false, no_sensitivity = false;
 };
 
+/// The subcommand's options, all in one place.
+void define_options(CLI::App* sub, Opts& o) {
+  sub->add_option("name", o.name, "Experiment name: self-contact")->required();
+  sub->add_option("--out", o.out, "Output directory (experiment.json and .md; calibration.json and .md)")
+      ->capture_default_str()
+      ->check(non_empty());
+  sub->add_option("--threads", o.threads, "Worker threads (0 = all cores); results do not depend on it")
+      ->check(integer_in(0, io::kMaxThreads));
+  sub->add_flag("--quick", o.quick, "2 s per run, 2 seeds, core-mt only, no sensitivity (for CI)");
+  sub->add_option("--seeds", o.seeds, "Runs per cell with independent wind seeds (default 10; 2 with --quick)")
+      ->check(integer_in(1, kMaxSeeds));
+  sub->add_option("--detector", o.detector,
+                  "What counts as a self-contact frame: core, core-mt, core-rotation, or a list (default core-mt,core)")
+      ->check(non_empty());
+  sub->add_option("--runs", o.runs, "Only these cells, e.g. 0-7,12 (default: all 72; timing claims need all)")
+      ->check(non_empty());
+  sub->add_flag("--calibrate", o.calibrate, "Fit air drag and swirl rate on the calibration cells; writes calibration.json");
+  sub->add_option("--calibration", o.calibration,
+                  "Calibration record (default data/seed_tables/self_contact_calibration.json)")
+      ->check(non_empty());
+  sub->add_flag("--no-sensitivity", o.no_sensitivity, "Skip the readings that vary the seed's open choices");
+  sub->add_option("--scene", o.scene, "Base scene (default data/scenes/seed_fig21_self_contact.json)")->check(non_empty());
+  sub->add_option("--seed-table", o.seed_table, "The seed's tables (default data/seed_tables/self_contact_share.json)")
+      ->check(non_empty());
+  sub->add_option("--strength", o.strength, "Edge modes' push per particle [N] (default: the scene's)")
+      ->check(number_in(0.0, false, 1e9));
+  sub->add_option("--elasticity-as", o.elasticity_as, "What the cloth's elasticity is: stiffness (default) | restitution")
+      ->check(one_of({"stiffness", "restitution"}));
+  sub->add_option("--shard", o.shard, "Only the cases whose index % n == i, e.g. 0/8; join the shards with `tecido merge`")
+      ->check(shard_spec());
+  sub->add_option("--max-work", o.max_work, "Largest work of one run, steps x elements per step (see tecido run)")
+      ->capture_default_str()
+      ->check(number_in(1.0, false, io::kMaxWorkCeiling));
+}
+
 /// Every run of the experiment must fit in the work limit: the base scene at the smallest step.
-void check_experiment_work(const suites::SelfContactOptions& opt, double max_work) {
+void check_experiment_work(const sc::Options& opt, double max_work) {
   const Scene base = io::load_scene(opt.scene_path);
   double smallest_dt = base.dt;
-  for (const auto& run : suites::self_contact_runs()) smallest_dt = std::min(smallest_dt, run.dt);
-  const auto steps = static_cast<long long>(std::ceil(opt.simulated_time / smallest_dt));
+  for (const double dt : sc::CellGrid::steps) smallest_dt = std::min(smallest_dt, dt);
+  const auto steps = static_cast<long long>(std::ceil(sc::settings(opt.quick).simulated_time / smallest_dt));
   const std::string too_much = io::work_limit_problem(base, steps, max_work);
   if (!too_much.empty()) throw io::InputError(opt.scene_path, "", "a run of the experiment: " + too_much);
 }
 
-suites::SelfContactOptions experiment_options(const ExperimentOptions& o) {
+sc::Options to_options(const Opts& o) {
   if (o.name != "self-contact") throw io::UsageError("unknown experiment \"" + o.name + "\" (known: self-contact)");
-  suites::SelfContactOptions opt;
-  opt.scene_path = o.scene.empty() ? std::string(TECIDO_SOURCE_DIR) + "/data/scenes/seed_fig21_self_contact.json" : o.scene;
-  opt.seed_table_path =
-      o.seed_table.empty() ? std::string(TECIDO_SOURCE_DIR) + "/data/seed_tables/self_contact_share.json" : o.seed_table;
+  const std::string data = std::string(TECIDO_SOURCE_DIR) + "/data";
+  sc::Options opt;
+  opt.scene_path = o.scene.empty() ? data + "/scenes/seed_fig21_self_contact.json" : o.scene;
+  opt.seed_table_path = o.seed_table.empty() ? data + "/seed_tables/self_contact_share.json" : o.seed_table;
+  opt.calibration_path = o.calibration.empty() ? data + "/seed_tables/self_contact_calibration.json" : o.calibration;
   opt.quick = o.quick;
-  opt.simulated_time = o.quick ? 2.0 : 10.0;
-  opt.threads = o.threads > 0 ? o.threads : std::max(1u, std::thread::hardware_concurrency());
+  opt.seeds = o.seeds;
+  if (!o.detector.empty()) opt.detectors = parse_engine_list(o.detector, {"core", "core-mt", "core-rotation"}, "--detector");
+  if (!o.runs.empty()) opt.cells = parse_runs(o.runs, sc::CellGrid::kCells);
+  opt.calibrate = o.calibrate;
+  opt.sensitivity = !o.no_sensitivity;
   opt.elasticity_as = o.elasticity_as;
-  if (o.strength_opt->count() > 0) opt.strength = o.strength;
-  const int count = static_cast<int>(suites::self_contact_runs().size());
-  if (!o.runs.empty()) opt.runs = parse_runs(o.runs, count);
-  if (!o.shard.empty()) {
-    std::tie(opt.shard_index, opt.shard_count) = parse_shard(o.shard);
-    std::vector<int> sorted = opt.runs;
-    std::sort(sorted.begin(), sorted.end());
-    if (std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end())
-      throw io::UsageError("--shard: --runs must not name a run twice");
-  }
+  if (!std::isnan(o.strength)) opt.strength = o.strength;
+  opt.threads = o.threads > 0 ? o.threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  if (!o.shard.empty()) std::tie(opt.shard_index, opt.shard_count) = parse_shard(o.shard);
   opt.progress = true;
+  opt.out_dir = o.out;
   return opt;
 }
 
-int run_experiment(const ExperimentOptions& o) {
-  suites::SelfContactOptions opt = experiment_options(o);
-  const bool sharded = !o.shard.empty();
-  const io::Json seed = io::read_json_file(opt.seed_table_path);
+int run(const Opts& o) {
+  const sc::Options opt = to_options(o);
   check_experiment_work(opt, o.max_work);
   io::check_output_dir(o.out);
+  const auto plan = std::make_shared<const sc::Plan>(sc::make_plan(opt));
+  const suites::Sweep sweep = sc::make_sweep(plan);
+  const auto indices = suites::shard_indices(sweep.cases, opt.shard_index, opt.shard_count);
   const auto t0 = std::chrono::steady_clock::now();
-  const auto results = suites::run_self_contact_experiment(opt);
+  const auto results = suites::run_sweep_cases(sweep, indices, opt.threads, "self-contact", opt.progress);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  if (sharded) {
-    io::write_file_atomic(o.out + "/experiment.json", suites::self_contact_shard_json(results, opt));
-  } else {
-    io::write_file_atomic(o.out + "/experiment.json", suites::self_contact_json(results, opt));
-    io::write_file_atomic(o.out + "/experiment.md", suites::self_contact_markdown(results, seed, opt));
+  const std::string file = opt.calibrate ? "calibration.json" : "experiment.json";
+  std::cout << "self-contact: " << indices.size() << " cases in " << seconds << " s on " << opt.threads << " threads; ";
+  if (opt.shard_count > 1 || !o.shard.empty()) {
+    io::write_file_atomic(o.out + "/" + file, sc::shard_json(*plan, indices, results));
+    std::cout << "wrote " << o.out << "/" << file << " (shard " << o.shard << ")\n";
+    return 0;
   }
-  int unstable = 0;
-  for (const auto& r : results) unstable += r.status != "ok";
-  std::cout << "self-contact: " << results.size() << " runs in " << seconds << " s on " << opt.threads
-            << " threads; wrote " << o.out
-            << (sharded ? "/experiment.json (shard " + o.shard + ")" : "/experiment.json and experiment.md");
-  if (unstable) std::cout << "; " << unstable << " runs went unstable";
-  std::cout << "\n";
+  const sc::Outputs out = sc::assemble(*plan, results);
+  for (const auto& [name, text] : out.files) io::write_file_atomic(o.out + "/" + name, text);
+  std::cout << out.summary << "; wrote " << o.out << "/" << file << " and .md\n";
   return 0;
 }
 
 Command add_experiment(CLI::App& app) {
-  auto o = std::make_shared<ExperimentOptions>();
-  CLI::App* sub = app.add_subcommand("experiment", "Run one of the seed's experiments: self-contact (72 runs, tables 1-3)");
-  sub->add_option("name", o->name, "Experiment name: self-contact")->required();
-  sub->add_option("--out", o->out, "Output directory (experiment.json, experiment.md)")
-      ->capture_default_str()
-      ->check(non_empty());
-  sub->add_option("--threads", o->threads, "Worker threads (0 = all cores); results do not depend on it")
-      ->check(integer_in(0, io::kMaxThreads));
-  sub->add_flag("--quick", o->quick, "2 s of simulated time per run instead of 10 (for tests)");
-  sub->add_option("--runs", o->runs, "Only these run indices, e.g. 0-7,12 (default: all 72)")->check(non_empty());
-  sub->add_option("--scene", o->scene, "Base scene (default data/scenes/seed_fig21_self_contact.json)")->check(non_empty());
-  sub->add_option("--seed-table", o->seed_table, "The seed's tables (default data/seed_tables/self_contact_share.json)")
-      ->check(non_empty());
-  o->strength_opt = sub->add_option("--strength", o->strength,
-                                    "Response force per particle [N] (default: the scene's self_collision.strength)")
-                        ->check(number_in(0.0, false, 1e9));
-  sub->add_option("--elasticity-as", o->elasticity_as, "What the cloth's elasticity is: stiffness | restitution")
-      ->capture_default_str()
-      ->check(one_of({"stiffness", "restitution"}));
-  sub->add_option("--shard", o->shard, "Only the runs whose index % n == i, e.g. 0/8; join the shards with `tecido merge`")
-      ->check(shard_spec());
-  sub->add_option("--max-work", o->max_work, "Largest work of one run, steps x elements per step (see tecido run)")
-      ->capture_default_str()
-      ->check(number_in(1.0, false, io::kMaxWorkCeiling));
-  return [o]() { return run_experiment(*o); };
+  auto o = std::make_shared<Opts>();
+  CLI::App* sub = app.add_subcommand("experiment", "Run one of the seed's experiments: self-contact (tables 1-3, as an ensemble)");
+  define_options(sub, *o);
+  return [o]() { return run(*o); };
 }
 
 }  // namespace

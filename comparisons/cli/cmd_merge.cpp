@@ -1,7 +1,7 @@
 // tecido merge DIR... --out DIR2 [--seed-table FILE]
 // Joins shards into the result of the unsharded run. Each DIR holds one shard (or is its file):
 //  - DIR/experiment.json of `tecido experiment self-contact --shard i/n`: writes DIR2/experiment.json
-//    and DIR2/experiment.md, byte for byte what the unsharded run writes (comparisons/suites/merge.h);
+//    and DIR2/experiment.md, byte for byte what the unsharded run writes (comparisons/suites/self_contact/shards.h);
 //  - DIR/shard.json of `tecido suite NAME... --shard i/n`: assembles each suite from its cases and
 //    writes DIR2/report.json, DIR2/report.md and plots, what the unsharded run writes but for
 //    wall-clock measurements (comparisons/suites/suite_shard.h); exit 1 when a check fails.
@@ -14,9 +14,8 @@
 #include "comparisons/io/gnuplot.h"
 #include "comparisons/io/input_error.h"
 #include "comparisons/io/json_reader.h"
-#include "comparisons/suites/experiment_self_contact.h"
-#include "comparisons/suites/merge.h"
 #include "comparisons/suites/report.h"
+#include "comparisons/suites/self_contact/shards.h"
 #include "comparisons/suites/suite_shard.h"
 
 #include <algorithm>
@@ -28,22 +27,23 @@ namespace tecido::cli {
 
 namespace {
 
-/// DIR -> the shard file in it: shard.json (a suite shard) when present, else experiment.json.
+/// DIR -> the shard file in it: shard.json (a suite shard) when present, else experiment.json, else
+/// calibration.json (an experiment's calibration shard).
 std::string shard_file(const std::string& d) {
   std::error_code ec;
   if (std::filesystem::is_regular_file(d, ec)) return d;
-  const auto suite = std::filesystem::path(d) / "shard.json";
-  if (std::filesystem::is_regular_file(suite, ec)) return suite.string();
+  for (const char* name : {"shard.json", "experiment.json", "calibration.json"}) {
+    const auto f = std::filesystem::path(d) / name;
+    if (std::filesystem::is_regular_file(f, ec)) return f.string();
+  }
   return (std::filesystem::path(d) / "experiment.json").string();
 }
 
 int merge_experiment(const std::vector<std::string>& files, const std::string& out, const std::string& seed_table) {
-  const suites::MergedSelfContact m = suites::merge_self_contact_shards(files);
-  const io::Json seed = io::read_json_file(seed_table.empty() ? m.opt.seed_table_path : seed_table);
-  io::write_file_atomic(out + "/experiment.json", suites::self_contact_json(m.results, m.opt));
-  io::write_file_atomic(out + "/experiment.md", suites::self_contact_markdown(m.results, seed, m.opt));
-  std::cout << "merge: " << m.shards << " shards, " << m.results.size() << " runs; wrote " << out
-            << "/experiment.json and experiment.md\n";
+  const auto m = suites::self_contact::merge_shards(files, out, seed_table);
+  for (const auto& [name, text] : m.outputs.files) io::write_file_atomic(out + "/" + name, text);
+  std::cout << "merge: " << m.shards << " shards, " << m.cases << " cases; " << m.outputs.summary << "; wrote " << out
+            << "/" << m.outputs.files.front().first << " and .md\n";
   return 0;
 }
 

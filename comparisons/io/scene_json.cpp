@@ -4,11 +4,27 @@
 #include "core/cloth/cloth_builder.h"
 
 #include <cmath>
+#include <memory>
 #include <random>
 
 namespace tecido::io {
 
 namespace {
+
+/// "random": {"seed": integer >= 0 (default: the scene's seed), "heading_diffusion": D [rad^2/s] in
+/// [0, 1e3], "knot_interval": tau [s] in [1e-3, 1e3] (default 0.1)} inside "wind": the seed's random
+/// wind (core/dynamics/random_wind.h). Its knots are prepared by the caller.
+RandomHeading read_random_heading(const JsonReader& r, const Json& j, const std::string& w, std::uint64_t seed) {
+  r.require_object(j, w);
+  r.only_keys(j, w, {"seed", "heading_diffusion", "knot_interval"});
+  RandomHeading h;
+  h.seed = j.contains("seed") ? static_cast<std::uint64_t>(r.integer(j["seed"], child(w, "seed"), 0, INT64_MAX)) : seed;
+  h.diffusion = r.number_in(r.require(j, w, "heading_diffusion"), child(w, "heading_diffusion"), 0.0, 1e3);
+  if (j.contains("knot_interval")) {
+    h.knot_interval = r.number_in(j["knot_interval"], child(w, "knot_interval"), 1e-3, 1e3);
+  }
+  return h;
+}
 
 Wind read_wind(const JsonReader& r, const Json& j, const std::string& w, std::uint64_t seed) {
   Wind wind;
@@ -17,7 +33,7 @@ Wind read_wind(const JsonReader& r, const Json& j, const std::string& w, std::ui
     return wind;
   }
   r.require_object(j, w);
-  r.only_keys(j, w, {"force", "swirl"});
+  r.only_keys(j, w, {"force", "swirl", "random"});
   wind.force = r.vec3(r.require(j, w, "force"), child(w, "force"), 1e9);
   if (j.contains("swirl")) {
     const std::string ws = child(w, "swirl");
@@ -36,6 +52,10 @@ Wind read_wind(const JsonReader& r, const Json& j, const std::string& w, std::ui
       std::mt19937_64 rng(seed);
       wind.phase = static_cast<double>(rng() >> 11) * 0x1.0p-53 * 2.0 * M_PI;
     }
+  }
+  if (j.contains("random")) {
+    if (!wind.swirl) r.fail(child(w, "random"), "needs \"swirl\" (the axis the heading turns about, its mean rate)");
+    wind.random = std::make_shared<const RandomHeading>(read_random_heading(r, j["random"], child(w, "random"), seed));
   }
   return wind;
 }
@@ -222,6 +242,11 @@ Scene scene_from_json(const Json& doc, const std::string& file) {
   if (doc.contains("gravity")) s.forces.gravity = r.vec3(doc["gravity"], "/gravity", 1e6);
   if (doc.contains("air_drag")) s.forces.air_drag = r.number_in(doc["air_drag"], "/air_drag", 0.0, 1e12);
   if (doc.contains("wind")) s.forces.wind = read_wind(r, doc["wind"], "/wind", s.seed);
+  if (s.forces.wind && s.forces.wind->random) {
+    auto h = std::make_shared<RandomHeading>(*s.forces.wind->random);
+    h->prepare(static_cast<double>(s.steps) * s.dt);
+    s.forces.wind->random = std::move(h);
+  }
 
   const bool has_planes = doc.contains("planes");
   if (has_planes) {

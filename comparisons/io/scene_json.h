@@ -8,7 +8,9 @@
 ///   gravity     [gx,gy,gz] [m/s^2]; absent = no gravity
 ///   air_drag    linear drag coefficient c >= 0 [kg/s], force -c v; absent = none
 ///   wind        [fx,fy,fz] [N per particle], or {"force":[..], "swirl":{"rate":rad/s,
-///               "axis":[..] (default [0,0,1]), "phase":rad (default: drawn from seed)}}
+///               "axis":[..] (default [0,0,1]), "phase":rad (default: drawn from seed)},
+///               "random":{"seed", "heading_diffusion":rad^2/s, "knot_interval":s} (with swirl;
+///               core/dynamics/random_wind.h)}
 ///   particles   [{"position", "velocity" (default 0), "mass" (> 0, required unless pinned),
 ///                 "pinned" (default false), "elasticity" (k in [0,1], required when the scene has planes)}]
 ///   springs     [{"i","j","stiffness" (>= 0),"rest_length" (>= 0, default: initial distance),"damping" (>= 0, default 0)}]
