@@ -149,7 +149,7 @@ Command add_suite(CLI::App& app) {
   CLI::App* sub = app.add_subcommand("suite", "Run comparison suites and write report.json and report.md. Suites:" + list);
   sub->add_option("names", o->names, "Suite names, or all")->required();
   sub->add_option("--out", o->out, "Output directory")->capture_default_str()->check(non_empty());
-  sub->add_flag("--quick", o->quick, "Smaller counts, same checks (under 2 minutes for all)");
+  sub->add_flag("--quick", o->quick, "Smaller counts, same checks");
   sub->add_option("--seed", o->seed, "Seed of every random input (written into the report)")
       ->capture_default_str()
       ->check(unsigned_integer());
@@ -157,9 +157,12 @@ Command add_suite(CLI::App& app) {
       ->check(integer_in(0, io::kMaxThreads));
   sub->add_option("--tolerances", o->tolerances, "Tolerance file (default data/tolerances.json)")->check(non_empty());
   sub->add_option("--data", o->data, "Data directory (default: the source tree's data/)")->check(non_empty());
+  std::string sweeps;
+  for (const auto& s : suites::suite_registry())
+    if (s.sweep) sweeps += (sweeps.empty() ? "" : ", ") + s.name;
   sub->add_option("--shard", o->shard,
-                  "Only the cases whose index % n == i of the sweep suites (tritri, stability, tradeoff), e.g. 0/8: "
-                  "writes DIR/shard.json; join the shards with `tecido merge`")
+                  "Only the cases whose index % n == i of the sweep suites (" + sweeps +
+                      "), e.g. 0/8: writes DIR/shard.json; join the shards with `tecido merge`")
       ->check(shard_spec());
   return [o]() { return run_suite_command(*o); };
 }
