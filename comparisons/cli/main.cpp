@@ -5,6 +5,7 @@
 #include "comparisons/cli/error_line.h"
 #include "comparisons/io/input_error.h"
 #include "comparisons/io/output_error.h"
+#include "core/platform/simd_level.h"
 
 #include <algorithm>
 #include <cerrno>
@@ -62,6 +63,10 @@ int check_stdout(int code) {
 int main(int argc, char** argv) {
   // A file-size limit (ulimit -f) then shows as a failed write, reported like a full disk.
   std::signal(SIGXFSZ, SIG_IGN);
+  if (const auto& simd = tecido::simd_choice(); !simd.error.empty()) {
+    tecido::cli::report_error(std::cerr, simd.error);
+    return 2;
+  }
   const auto names = tecido::cli::command_names();
   if (argc > 1 && argv[1][0] != '-' && std::find(names.begin(), names.end(), argv[1]) == names.end()) {
     std::string known;

@@ -1,6 +1,5 @@
 #include "core/platform/simd_level.h"
 
-#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 
@@ -61,23 +60,17 @@ SimdChoice choose_simd_level(const char* request) {
   return c;
 }
 
-SimdLevel simd_level() {
-  static const SimdLevel level = [] {
-    const SimdChoice c = choose_simd_level(std::getenv("TECIDO_SIMD"));
-    if (!c.error.empty()) {
-      std::fprintf(stderr, "tecido: %s\n", c.error.c_str());
-      std::exit(2);
-    }
-    return c.level;
+const SimdChoice& simd_choice() {
+  static const SimdChoice choice = [] {
+    SimdChoice c = choose_simd_level(std::getenv("TECIDO_SIMD"));
+    if (!c.error.empty()) c.level = widest_on_cpu();  // refused: the program's entry point says so
+    return c;
   }();
-  return level;
+  return choice;
 }
 
-bool simd_level_allowed(SimdLevel level) { return cpu_has_simd_level(level) && level <= simd_level(); }
+SimdLevel simd_level() { return simd_choice().level; }
 
-namespace {
-/// Reads the variable when the process starts, so a refused value ends it before any work.
-[[maybe_unused]] const SimdLevel read_at_startup = simd_level();
-}  // namespace
+bool simd_level_allowed(SimdLevel level) { return cpu_has_simd_level(level) && level <= simd_level(); }
 
 }  // namespace tecido

@@ -10,8 +10,10 @@
 ///   scalar       the spring loop without intrinsics (the box tree keeps its SSE2 compares,
 ///                which are part of x86-64);
 ///   sse2, avx, avx512   at most that instruction set (avx512 means AVX-512F).
-/// A name the CPU (or this build) cannot run, or an unknown name, is refused: one line on
-/// stderr and exit status 2, when the process starts. The variable is read once. Every kernel
+/// A name the CPU (or this build) cannot run, or an unknown name, is refused: core then keeps the
+/// widest level the CPU has and reports the refusal in simd_choice().error, which the programs'
+/// entry points (tecido, tecido-bench) print as one line before exiting with status 2; core
+/// itself never ends the process. The variable is read once. Every kernel
 /// produces the same bits (tests compare each with the plain loop), so the choice changes the
 /// speed of a run, never its results.
 #include <string>
@@ -37,8 +39,11 @@ struct SimdChoice {
 /// `request` is the variable's value (nullptr or "": not set, the widest the CPU has).
 SimdChoice choose_simd_level(const char* request);
 
-/// This process's ceiling: choose_simd_level(getenv("TECIDO_SIMD")), read once (at start-up, by a
-/// static initializer). A refused value prints its error on stderr and exits with status 2.
+/// choose_simd_level(getenv("TECIDO_SIMD")), read once; when refused (error non-empty) its level
+/// is the widest the CPU has.
+const SimdChoice& simd_choice();
+
+/// This process's ceiling: simd_choice().level.
 SimdLevel simd_level();
 
 /// Whether a kernel of `level` may run in this process: the CPU has it and it is at most simd_level().
