@@ -37,9 +37,6 @@ namespace {
 
 namespace sc = suites::self_contact;
 
-/// Most wind realisations per cell --seeds takes (10^4 x 72 cells of 10 s is already days of CPU).
-constexpr int kMaxSeeds = 10000;
-
 /// "0-7,12,20-23" -> indices, each in [0, count): bounds are checked before a range is expanded.
 std::vector<int> parse_runs(const std::string& list, int count) {
   std::vector<int> out;
@@ -84,7 +81,7 @@ void define_options(CLI::App* sub, Opts& o) {
       ->check(integer_in(0, io::kMaxThreads));
   sub->add_flag("--quick", o.quick, "2 s per run, 2 seeds, core-mt only, no sensitivity (for CI)");
   sub->add_option("--seeds", o.seeds, "Runs per cell with independent wind seeds (default 10; 2 with --quick)")
-      ->check(integer_in(1, kMaxSeeds));
+      ->check(integer_in(1, io::kMaxSeeds));
   sub->add_option("--detector", o.detector,
                   "What counts as a self-contact frame: core, core-mt, core-rotation, or a list (default core-mt,core)")
       ->check(non_empty());
