@@ -125,7 +125,8 @@ sc::Options to_options(const Opts& o) {
   opt.calibration_path = o.calibration.empty() ? data + "/seed_tables/self_contact_calibration.json" : o.calibration;
   opt.quick = o.quick;
   opt.seeds = o.seeds;
-  if (!o.detector.empty()) opt.detectors = parse_engine_list(o.detector, {"core", "core-mt", "core-rotation"}, "--detector");
+  if (!o.detector.empty())
+    opt.detectors = parse_engine_list(o.detector, {"core", "core-mt", "core-rotation"}, "self-contact", "--detector");
   if (!o.runs.empty()) opt.cells = parse_runs(o.runs, sc::CellGrid::kCells);
   opt.calibrate = o.calibrate;
   opt.sensitivity = !o.no_sensitivity;

@@ -26,8 +26,9 @@ struct CommandRegistrar {
   static const ::tecido::cli::CommandRegistrar tecido_registrar_##name(#name, &factory)
 
 /// Splits "a,b,c" and checks each name against `known`; throws io::UsageError naming --engines on
-/// an unknown one or an empty list.
+/// an unknown one or an empty list (`option`: the option the list came from).
 std::vector<std::string> parse_engine_list(const std::string& list, const std::vector<std::string>& known,
-                                           const std::string& what);
+                                           const std::string& what,
+                                           const std::string& option = "--engines");
 
 }  // namespace tecido::cli

@@ -6,7 +6,7 @@
 namespace tecido::cli {
 
 std::vector<std::string> parse_engine_list(const std::string& list, const std::vector<std::string>& known,
-                                           const std::string& what) {
+                                           const std::string& what, const std::string& option) {
   std::vector<std::string> out;
   std::stringstream ss(list);
   std::string name;
@@ -17,13 +17,13 @@ std::vector<std::string> parse_engine_list(const std::string& list, const std::v
     if (!ok) {
       std::string all;
       for (const auto& k : known) all += (all.empty() ? "" : ", ") + k;
-      throw io::UsageError("--engines: unknown " + what + " engine \"" + name + "\" (known: " + all + ")");
+      throw io::UsageError(option + ": unknown " + what + " engine \"" + name + "\" (known: " + all + ")");
     }
     for (const auto& prev : out)
-      if (prev == name) throw io::UsageError("--engines: \"" + name + "\" is named twice");
+      if (prev == name) throw io::UsageError(option + ": \"" + name + "\" is named twice");
     out.push_back(name);
   }
-  if (out.empty()) throw io::UsageError("--engines: no " + what + " engine given");
+  if (out.empty()) throw io::UsageError(option + ": no " + what + " engine given");
   return out;
 }
 
