@@ -12,12 +12,14 @@ namespace tecido {
 
 /// Applies eq. 9 to v relative to surface velocity u for a contact with outward unit normal n
 /// (pointing from the surface towards the particle). A particle already separating
-/// (v_rel . n >= 0, possible when a moving surface or the integrator's curved path has turned it
-/// around by the end of the bracket) is left alone: nothing (no branch ran) is returned.
+/// (v_rel . n > 0, possible when a moving surface or the integrator's curved path has turned it
+/// around by the end of the bracket) is left alone: nothing (no branch ran) is returned. One
+/// sliding along the surface (v_rel . n = 0, e.g. onto the next coplanar triangle of a mesh)
+/// gets the static branch, so it rests there.
 inline std::optional<ContactKind> respond_to_moving_contact(Vec3& v, const Vec3& u, const Vec3& n, double k,
                                                             double friction, const ContactSettings& s) {
   Vec3 rel = v - u;
-  if (!(rel.dot(n) < 0.0)) return std::nullopt;
+  if (!(rel.dot(n) <= 0.0)) return std::nullopt;
   const ContactKind kind = respond_to_contact(rel, n, k, friction, s);
   v = rel + u;
   return kind;
