@@ -4,7 +4,8 @@
 // the first and the last; default K = ceil(steps / 100)), .vtk as well with --vtk, and
 // DIR/cloth.svg, four key frames drawn by gnuplot (skipped, with a note, without gnuplot).
 // A scene with `self_collision` runs with its post-step hook; the result then carries
-// "self_collision": {checks, contact_checks, pairs, ...}.
+// "self_collision": {checks, contact_checks, pairs, ...}. Obstacles are drawn into every frame at
+// that frame's time (moving ones move).
 #include "comparisons/cli/commands.h"
 #include "comparisons/io/atomic_file.h"
 #include "comparisons/io/cloth_plot.h"
@@ -77,7 +78,8 @@ Command add_run(CLI::App& app) {
       auto capture = [&](const Simulation& s) {
         const long long k = s.steps_done();
         const Particles& p = s.particles();
-        if (k % every == 0 || k == n) frames->write(k, s.time(), p.x, p.v, scene.triangles);
+        if (k % every == 0 || k == n)
+          frames->write(k, s.time(), p.x, p.v, scene.triangles, io::obstacle_surfaces(scene.obstacles, s.time()));
         for (long long key : keys)
           if (k == key && (key_frames.empty() || key_frames.back().step != k)) {
             key_frames.push_back({k, s.time(), p.x});

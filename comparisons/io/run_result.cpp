@@ -26,6 +26,14 @@ Json run_result_json(const Simulation& sim) {
                      {"bisections", c.bisections},
                      {"bisection_tolerance", sim.bisection_tolerance()},
                      {"event_cap_hits", c.cap_hits}};
+  if (!sim.scene().obstacles.empty()) {
+    const ObstacleCounters& o = sim.obstacle_contacts().counters();
+    out["obstacles"] = {{"contacts", o.contacts},
+                        {"separating", o.separating},
+                        {"resting_now", sim.obstacle_contacts().resting().size()},
+                        {"resting_corrections", o.resting_corrections},
+                        {"guard_corrections", o.guard_corrections}};
+  }
   out["particles"] = std::move(particles);
   return out;
 }

@@ -1,5 +1,6 @@
 #include "comparisons/io/scene_json.h"
 
+#include "comparisons/io/obstacle_json.h"
 #include "comparisons/io/plane_json.h"
 #include "core/cloth/cloth_builder.h"
 
@@ -111,7 +112,7 @@ Scene scene_from_json(const Json& doc, const std::string& file) {
   const std::string root;
   r.require_object(doc, root);
   r.only_keys(doc, root, {"integrator", "dt", "steps", "seed", "gravity", "air_drag", "wind", "particles", "springs",
-                          "planes", "contact", "cloth", "self_collision"});
+                          "planes", "contact", "cloth", "self_collision", "obstacles", "edge_contacts"});
   Scene s;
   if (doc.contains("integrator")) {
     const std::string name = r.string(doc["integrator"], "/integrator");
@@ -128,6 +129,8 @@ Scene scene_from_json(const Json& doc, const std::string& file) {
   if (doc.contains("wind")) s.forces.wind = read_wind(r, doc["wind"], "/wind", s.seed);
 
   const bool has_planes = doc.contains("planes");
+  // Every free particle needs its own k when a plane, or an obstacle without elasticity, can hit it.
+  const bool needs_k = has_planes || (doc.contains("obstacles") && obstacles_use_particle_k(doc["obstacles"]));
   if (has_planes) {
     const Json& planes = r.require_array(doc["planes"], "/planes");
     for (std::size_t k = 0; k < planes.size(); ++k) s.planes.push_back(read_bounded_plane(r, planes[k], child("/planes", k), /*strict=*/true));
@@ -166,8 +169,8 @@ Scene scene_from_json(const Json& doc, const std::string& file) {
       double k_el = 1.0;
       if (p.contains("elasticity")) {
         k_el = r.number_in(p["elasticity"], child(w, "elasticity"), 0.0, 1.0);
-      } else if (has_planes && !pinned) {
-        r.fail(child(w, "elasticity"), "missing required key (the scene has planes)");
+      } else if (needs_k && !pinned) {
+        r.fail(child(w, "elasticity"), "missing required key (the scene has planes or obstacles)");
       }
       s.particles.add(x, v, mass, k_el, pinned);
     }
@@ -178,6 +181,11 @@ Scene scene_from_json(const Json& doc, const std::string& file) {
     if (s.triangles.empty()) r.fail("/self_collision", "self-collision needs a cloth (the triangle mesh it tests)");
   }
   if (s.particles.size() == 0) r.fail("/particles", "the scene has no particles (give particles or a cloth)");
+  if (doc.contains("obstacles")) {
+    s.obstacles = read_obstacles(r, doc["obstacles"], "/obstacles", file);
+    check_particles_outside(r, s.obstacles, "/obstacles", s.particles.x, s.particles.pinned);
+  }
+  if (doc.contains("edge_contacts")) s.edge_contacts = r.boolean(doc["edge_contacts"], "/edge_contacts");
 
   if (doc.contains("springs")) {
     const Json& ss = r.require_array(doc["springs"], "/springs");
