@@ -1,5 +1,6 @@
 #include "comparisons/io/obstacle_json.h"
 
+#include "comparisons/io/limits.h"
 #include "comparisons/io/obj_mesh.h"
 #include "comparisons/io/scene_json.h"
 #include "core/geometry/orient_predicates.h"
@@ -12,11 +13,6 @@ namespace tecido::io {
 
 namespace {
 
-// The same names and values as comparisons/io/limits.h of the input-limits work; that header
-// replaces these once it is on main.
-constexpr std::size_t kMaxObstacles = 1024;
-constexpr std::size_t kMaxMeshVertices = std::size_t{1} << 20;
-constexpr std::size_t kMaxMeshTriangles = std::size_t{1} << 21;
 /// Keyframes of one mesh, and vertex positions over all its frames.
 constexpr std::size_t kMaxMeshFrames = 100000;
 constexpr std::size_t kMaxMeshFrameVertices = std::size_t{1} << 23;
