@@ -65,7 +65,9 @@ long long frame_interval(const RunOptions& o, const Scene& scene) {
                             " frames of " + std::to_string(steps) + " steps";
   if (frames > io::kMaxFrames)
     throw io::UsageError(gives + ", more than the limit of " + std::to_string(io::kMaxFrames) + " (choose a larger K)");
-  const double elements = static_cast<double>(scene.particles.size() + scene.triangles.size());
+  double elements = static_cast<double>(scene.particles.size() + scene.triangles.size());
+  for (const io::SurfaceMesh& m : io::obstacle_surfaces(scene.obstacles, 0.0))  // drawn into every frame
+    elements += static_cast<double>(m.vertices.size() + m.triangles.size());
   if (static_cast<double>(frames) * elements > io::kMaxFrameElements)
     throw io::UsageError(gives + " of " + std::to_string(static_cast<long long>(elements)) +
                          " particles and triangles, more than the limit of 1e9 in all (choose a larger K)");
