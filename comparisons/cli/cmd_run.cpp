@@ -4,7 +4,8 @@
 // the first and the last; default K = ceil(steps / 100)), .vtk as well with --vtk, and
 // DIR/cloth.svg, four key frames drawn by gnuplot (skipped, with a note, without gnuplot).
 // A scene with `self_collision` runs with its post-step hook; the result then carries
-// "self_collision": {checks, contact_checks, pairs, ...}.
+// "self_collision": {checks, contact_checks, pairs, ...}. Obstacles are drawn into every frame at
+// that frame's time (moving ones move).
 // Every limit is checked before the first step: the options' domains (cli/option_checks.h), the
 // scene's sizes (io/scene_json.h), the work limit (io/work_limit.h), the frame count and that
 // DIR can be written.
@@ -64,7 +65,9 @@ long long frame_interval(const RunOptions& o, const Scene& scene) {
                             " frames of " + std::to_string(steps) + " steps";
   if (frames > io::kMaxFrames)
     throw io::UsageError(gives + ", more than the limit of " + std::to_string(io::kMaxFrames) + " (choose a larger K)");
-  const double elements = static_cast<double>(scene.particles.size() + scene.triangles.size());
+  double elements = static_cast<double>(scene.particles.size() + scene.triangles.size());
+  for (const io::SurfaceMesh& m : io::obstacle_surfaces(scene.obstacles, 0.0))  // drawn into every frame
+    elements += static_cast<double>(m.vertices.size() + m.triangles.size());
   if (static_cast<double>(frames) * elements > io::kMaxFrameElements)
     throw io::UsageError(gives + " of " + std::to_string(static_cast<long long>(elements)) +
                          " particles and triangles, more than the limit of 1e9 in all (choose a larger K)");
@@ -81,7 +84,7 @@ std::string run_with_frames(Simulation& sim, const Scene& scene, const RunOption
   auto capture = [&](const Simulation& s) {
     const long long k = s.steps_done();
     const Particles& p = s.particles();
-    if (k % every == 0 || k == n) frames.write(k, s.time(), p.x, p.v, scene.triangles);
+    if (k % every == 0 || k == n) frames.write(k, s.time(), p.x, p.v, scene.triangles, io::obstacle_surfaces(scene.obstacles, s.time()));
     for (long long key : keys)
       if (k == key && (key_frames.empty() || key_frames.back().step != k)) {
         key_frames.push_back({k, s.time(), p.x});

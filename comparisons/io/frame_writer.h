@@ -8,6 +8,10 @@
 /// Files are DIR/frame_<step, 6 digits>.obj|.vtk, each written atomically (a file that cannot be
 /// written is an io::OutputError naming it). Positions are printed
 /// with 9 significant digits (enough to view, not to restart a run: result.json has 17).
+/// A scene's obstacles (obstacle_surfaces.h), when given, follow the particles: in OBJ each as its
+/// own object ("o obstacle_k", its vertices after the particles'); in VTK as more points and
+/// polygons (velocity 0) with a cell field "body" (0 = the scene's own cells, k + 1 = obstacle k).
+#include "comparisons/io/obstacle_surfaces.h"
 #include "core/geometry/types.h"
 
 #include <array>
@@ -18,11 +22,12 @@ namespace tecido::io {
 
 /// The OBJ text of one frame; `comment` becomes the first line after "# ".
 std::string obj_frame_text(const std::vector<Vec3>& x, const std::vector<std::array<int, 3>>& triangles,
-                           const std::string& comment);
+                           const std::string& comment, const std::vector<SurfaceMesh>& obstacles = {});
 
 /// The legacy VTK text of one frame (v may be empty: no velocity field).
 std::string vtk_frame_text(const std::vector<Vec3>& x, const std::vector<Vec3>& v,
-                           const std::vector<std::array<int, 3>>& triangles, const std::string& title);
+                           const std::vector<std::array<int, 3>>& triangles, const std::string& title,
+                           const std::vector<SurfaceMesh>& obstacles = {});
 
 class FrameWriter {
  public:
@@ -32,7 +37,7 @@ class FrameWriter {
   /// Writes the frame of `step` at time t. Frames with a non-finite position are skipped
   /// (returns false): viewers cannot read NaN.
   bool write(long long step, double t, const std::vector<Vec3>& x, const std::vector<Vec3>& v,
-             const std::vector<std::array<int, 3>>& triangles);
+             const std::vector<std::array<int, 3>>& triangles, const std::vector<SurfaceMesh>& obstacles = {});
 
   long long written() const { return written_; }
   const std::string& dir() const { return dir_; }

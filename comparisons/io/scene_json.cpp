@@ -1,5 +1,6 @@
 #include "comparisons/io/scene_json.h"
 
+#include "comparisons/io/obstacle_json.h"
 #include "comparisons/io/plane_json.h"
 #include "core/cloth/cloth_builder.h"
 
@@ -142,6 +143,8 @@ void check_list_sizes(const JsonReader& r, const Json& doc) {
   if (doc.contains("springs"))
     r.at_most(r.require_array(doc["springs"], "/springs").size(), "/springs", kMaxSprings, "springs");
   if (doc.contains("planes")) r.at_most(r.require_array(doc["planes"], "/planes").size(), "/planes", kMaxPlanes, "planes");
+  if (doc.contains("obstacles"))
+    r.at_most(r.require_array(doc["obstacles"], "/obstacles").size(), "/obstacles", kMaxObstacles, "obstacles");
 }
 
 void read_contact(const JsonReader& r, const Json& c, ContactSettings& contact) {
@@ -160,7 +163,8 @@ void read_contact(const JsonReader& r, const Json& c, ContactSettings& contact) 
         static_cast<int>(r.integer(c["max_events_per_step"], "/contact/max_events_per_step", 1, 1000000));
 }
 
-void read_particles(const JsonReader& r, const Json& ps, bool has_planes, Particles& particles) {
+/// `needs_k`: every free particle needs its own k (a plane, or an obstacle without elasticity, can hit it).
+void read_particles(const JsonReader& r, const Json& ps, bool needs_k, Particles& particles) {
   r.require_array(ps, "/particles");
   for (std::size_t k = 0; k < ps.size(); ++k) {
     const std::string w = child("/particles", k);
@@ -178,8 +182,8 @@ void read_particles(const JsonReader& r, const Json& ps, bool has_planes, Partic
     double k_el = 1.0;
     if (p.contains("elasticity")) {
       k_el = r.number_in(p["elasticity"], child(w, "elasticity"), 0.0, 1.0);
-    } else if (has_planes && !pinned) {
-      r.fail(child(w, "elasticity"), "missing required key (the scene has planes)");
+    } else if (needs_k && !pinned) {
+      r.fail(child(w, "elasticity"), "missing required key (the scene has planes or obstacles)");
     }
     particles.add(x, v, mass, k_el, pinned);
   }
@@ -226,7 +230,7 @@ Scene scene_from_json(const Json& doc, const std::string& file) {
   const std::string root;
   r.require_object(doc, root);
   r.only_keys(doc, root, {"integrator", "dt", "steps", "seed", "gravity", "air_drag", "wind", "particles", "springs",
-                          "planes", "contact", "cloth", "self_collision"});
+                          "planes", "contact", "cloth", "self_collision", "obstacles", "edge_contacts"});
   check_list_sizes(r, doc);
   Scene s;
   if (doc.contains("integrator")) {
@@ -249,18 +253,25 @@ Scene scene_from_json(const Json& doc, const std::string& file) {
   }
 
   const bool has_planes = doc.contains("planes");
+  // Every free particle needs its own k when a plane, or an obstacle without elasticity, can hit it.
+  const bool needs_k = has_planes || (doc.contains("obstacles") && obstacles_use_particle_k(doc["obstacles"]));
   if (has_planes) {
     const Json& planes = r.require_array(doc["planes"], "/planes");
     for (std::size_t k = 0; k < planes.size(); ++k) s.planes.push_back(read_bounded_plane(r, planes[k], child("/planes", k), /*strict=*/true));
   }
   if (doc.contains("contact")) read_contact(r, doc["contact"], s.contact);
-  if (doc.contains("particles")) read_particles(r, doc["particles"], has_planes, s.particles);
+  if (doc.contains("particles")) read_particles(r, doc["particles"], needs_k, s.particles);
   if (doc.contains("cloth")) add_cloth(r, doc["cloth"], s);
   if (doc.contains("self_collision")) {
     s.self_collision = read_self_collision(r, doc["self_collision"], "/self_collision");
     if (s.triangles.empty()) r.fail("/self_collision", "self-collision needs a cloth (the triangle mesh it tests)");
   }
   if (s.particles.size() == 0) r.fail("/particles", "the scene has no particles (give particles or a cloth)");
+  if (doc.contains("obstacles")) {
+    s.obstacles = read_obstacles(r, doc["obstacles"], "/obstacles", file);
+    check_particles_outside(r, s.obstacles, "/obstacles", s.particles.x, s.particles.pinned);
+  }
+  if (doc.contains("edge_contacts")) s.edge_contacts = r.boolean(doc["edge_contacts"], "/edge_contacts");
   if (doc.contains("springs")) read_springs(r, doc["springs"], s);
   return s;
 }

@@ -12,9 +12,13 @@
 ///               "random":{"seed", "heading_diffusion":rad^2/s, "knot_interval":s} (with swirl;
 ///               core/dynamics/random_wind.h)}
 ///   particles   [{"position", "velocity" (default 0), "mass" (> 0, required unless pinned),
-///                 "pinned" (default false), "elasticity" (k in [0,1], required when the scene has planes)}]
+///                 "pinned" (default false), "elasticity" (k in [0,1], required when the scene has planes
+///                 or an obstacle without its own elasticity)}]
 ///   springs     [{"i","j","stiffness" (>= 0),"rest_length" (>= 0, default: initial distance),"damping" (>= 0, default 0)}]
 ///   planes      [{"position","normal","forward","half_extents":[hx,hy] (>= 0),"friction" (in [0,1], default 0)}]
+///   obstacles   [{"sphere"|"box"|"mesh": {...}, "friction", "elasticity", "velocity", "angular_velocity",
+///                 "frames"}] (comparisons/io/obstacle_json.h)
+///   edge_contacts  true | false (default false): springs against obstacle edges
 ///   contact     {"static_threshold","tangential_threshold","bisection_tolerance","max_events_per_step"}
 ///   cloth       {"rows","cols","spacing","origin","axis_u","axis_v","total_mass","stiffness_b",
 ///                "stiffness_a","damping","elasticity","pins":[[r,c],..]}

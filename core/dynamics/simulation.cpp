@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <limits>
 
 namespace tecido {
 
@@ -14,7 +15,13 @@ std::int8_t sign_of(double s) { return s > 0.0 ? 1 : (s < 0.0 ? -1 : 0); }
 }  // namespace
 
 Simulation::Simulation(const Scene& scene)
-    : scene_(scene), p_(scene.particles), springs_(scene.forces.springs), integ_(scene.integrator) {
+    : scene_(scene),
+      p_(scene.particles),
+      springs_(scene.forces.springs),
+      integ_(scene.integrator),
+      obstacles_(scene_.obstacles, scene.particles.size()),
+      edges_(scene_.obstacles, scene_.forces.springs, scene_.particles.pinned, scene_.edge_contacts),
+      spring_boxes_(scene_.obstacles, scene_.forces.springs, scene_.particles.pinned, scene_.edge_contacts) {
   tol_ = scene_.contact.bisection_tolerance > 0.0 ? scene_.contact.bisection_tolerance : scene_.dt * 0x1.0p-20;
   accel_ = [this](double t, const std::vector<Vec3>& x, const std::vector<Vec3>& v, std::vector<Vec3>& a) {
     accelerations(t, x, v, a);
@@ -23,11 +30,16 @@ Simulation::Simulation(const Scene& scene)
   const std::size_t n = p_.size();
   side_.assign(n * n_planes_, 1);
   resting_flag_.assign(n * n_planes_, 0);
-  if (n_planes_ == 0) return;
+  if (n_planes_ == 0 && obstacles_.empty()) return;
   // Initial sides: the side the particle is on (exact sign, the one segment_plane decides
   // crossings with); on the plane, the side it comes from (against its velocity, else against its
-  // free acceleration, else the normal's side).
+  // free acceleration, else the normal's side). Mesh obstacles' triangles likewise.
   compute_accelerations(scene_.forces, springs_, p_.inv_mass, 0.0, p_.x, p_.v, a_free_);
+  obstacles_.init_sides(p_, a_free_);
+  if (!edges_.empty()) {
+    obstacles_.poses().at_start(0.0);
+    edges_.init_sides(obstacles_.poses(), p_);
+  }
   for (std::size_t i = 0; i < n; ++i) {
     for (std::size_t k = 0; k < n_planes_; ++k) {
       const BoundedPlane& pl = scene_.planes[k];
@@ -49,6 +61,15 @@ void Simulation::accelerations(double t, const std::vector<Vec3>& x, const std::
     const double an = n.dot(a[i]);
     if (side_[i * n_planes_ + k] * an < 0.0) a[i] -= an * n;
   }
+  obstacles_.cancel_resting(a);
+}
+
+bool Simulation::any_contact(double t1, const std::vector<Vec3>& x0, const std::vector<Vec3>& x1) {
+  if (any_hit(x0, x1)) return true;
+  if (obstacles_.empty()) return false;
+  if (obstacles_.any_hit(t1, x0, x1, p_)) return true;  // sets the poses at t1
+  if (!spring_boxes_.empty() && spring_boxes_.any_hit(obstacles_.poses(), x0, x1)) return true;
+  return !edges_.empty() && edges_.any_hit(obstacles_.poses(), x0, x1);
 }
 
 bool Simulation::any_hit(const std::vector<Vec3>& x0, const std::vector<Vec3>& x1) {
@@ -134,8 +155,65 @@ void Simulation::resolve_hit(const Hit& h, const std::vector<Vec3>& x0, double t
   }
 }
 
+void Simulation::update_obstacle_sides(double t1) {
+  if (obstacles_.empty()) return;
+  obstacles_.update_sides(t1, p_.x);  // sets the poses at t1
+  if (!spring_boxes_.empty()) spring_boxes_.move_out_all(obstacles_.poses(), p_);
+  if (!edges_.empty()) edges_.update_sides(obstacles_.poses(), p_);
+}
+
+void Simulation::resolve_obstacle_hit(const ObstacleHit& h, const std::vector<Vec3>& x0, double t_contact) {
+  const int i = h.particle;
+  const Vec3 before = p_.v[i];
+  const std::optional<ContactKind> kind = obstacles_.resolve(h, t_contact, x0, p_, scene_.contact);
+  if (!kind) return;
+  if (log_contacts_)
+    contact_log_.push_back(ContactEvent{step_, t_contact, i, -1, *kind, before, p_.v[i], h.obstacle, h.feature});
+  if (*kind == ContactKind::Elastic) {
+    ++counters_.elastic;
+  } else {
+    ++counters_.static_contacts;
+  }
+}
+
+void Simulation::resolve_contacts(double t1, const std::vector<Vec3>& x0) {
+  collect_hits(x0, p_.x, hits_);
+  if (obstacles_.empty()) {
+    for (const Hit& hit : hits_) resolve_hit(hit, x0, t1);
+    return;
+  }
+  obstacles_.collect(t1, x0, p_.x, p_, obstacle_hits_);
+  // Spring-edge contacts over the same motion, resolved after the particles' own.
+  if (!edges_.empty()) edges_.collect(obstacles_.poses(), x0, p_.x, edge_hits_);
+  if (!spring_boxes_.empty()) spring_boxes_.collect(obstacles_.poses(), x0, p_.x, spring_box_hits_);
+  // Both lists are in particle order with at most one entry per particle: each particle's
+  // earlier contact is resolved (a plane on a tie).
+  std::size_t a = 0, b = 0;
+  while (a < hits_.size() || b < obstacle_hits_.size()) {
+    const int pa = a < hits_.size() ? hits_[a].particle : std::numeric_limits<int>::max();
+    const int pb = b < obstacle_hits_.size() ? obstacle_hits_[b].particle : std::numeric_limits<int>::max();
+    if (pa < pb) {
+      resolve_hit(hits_[a++], x0, t1);
+    } else if (pb < pa) {
+      resolve_obstacle_hit(obstacle_hits_[b++], x0, t1);
+    } else if (hits_[a].t <= obstacle_hits_[b].s) {
+      resolve_hit(hits_[a++], x0, t1);
+      ++b;
+    } else {
+      resolve_obstacle_hit(obstacle_hits_[b++], x0, t1);
+      ++a;
+    }
+  }
+  if (!spring_boxes_.empty()) spring_boxes_.resolve(spring_box_hits_, obstacles_.poses(), p_, scene_.contact);
+  if (edges_.empty()) return;
+  for (const EdgeHit& h : edge_hits_) edges_.resolve(h, obstacles_.poses(), p_, scene_.contact);
+  edges_.separate(edge_hits_, obstacles_.poses(), p_);
+}
+
 void Simulation::begin_step_resting(double t) {
-  if (resting_.empty()) return;
+  if (resting_.empty() && obstacles_.resting().empty() && edges_.resting_count() == 0 &&
+      spring_boxes_.resting_count() == 0)
+    return;
   // Release contacts whose free acceleration pulls away or that slid off the rectangle; keep the
   // others on the plane with no normal velocity, and apply friction once per step.
   compute_accelerations(scene_.forces, springs_, p_.inv_mass, t, p_.x, p_.v, a_free_);
@@ -154,6 +232,12 @@ void Simulation::begin_step_resting(double t) {
     kept.emplace_back(i, k);
   }
   resting_.swap(kept);
+  obstacles_.begin_step(t, p_, a_free_, scene_.contact);
+  if (edges_.resting_count() > 0 || spring_boxes_.resting_count() > 0) {
+    obstacles_.poses().at_start(t);
+    edges_.begin_step(obstacles_.poses(), p_, a_free_, scene_.contact);
+    spring_boxes_.begin_step(obstacles_.poses(), p_, scene_.contact);
+  }
 }
 
 bool Simulation::check_finite() {
@@ -191,7 +275,7 @@ bool Simulation::step() {
   double t = time();
   ++step_;
   begin_step_resting(t);
-  if (n_planes_ == 0) {
+  if (n_planes_ == 0 && obstacles_.empty()) {
     integ_.step(accel_, t, h, p_.x, p_.v);
   } else {
     double remaining = h;
@@ -199,14 +283,16 @@ bool Simulation::step() {
     while (remaining > 0.0) {
       x0_ = p_.x;
       v0_ = p_.v;
+      obstacles_.poses().at_start(t);
       integ_.step(accel_, t, remaining, p_.x, p_.v);
-      if (!any_hit(x0_, p_.x)) {
+      if (!any_contact(t + remaining, x0_, p_.x)) {
         update_sides(p_.x);
+        update_obstacle_sides(t + remaining);
         break;
       }
       double hi = remaining;
       if (events >= scene_.contact.max_events_per_step) {
-        // Cap reached: resolve the remaining contacts at their segment crossing, unbisected.
+        // Cap reached: resolve the remaining contacts where their paths reach the surfaces, unbisected.
         ++counters_.cap_hits;
       } else {
         // Bisection on the step (fig. 8): lo never crosses, hi does.
@@ -218,7 +304,7 @@ bool Simulation::step() {
           vm_ = v0_;
           integ_.step(accel_, t, mid, xm_, vm_);
           ++counters_.bisections;
-          if (any_hit(x0_, xm_)) {
+          if (any_contact(t + mid, x0_, xm_)) {
             hi = mid;
           } else {
             lo = mid;
@@ -231,9 +317,9 @@ bool Simulation::step() {
         }
         ++counters_.events;
       }
-      collect_hits(x0_, p_.x, hits_);
-      for (const Hit& hit : hits_) resolve_hit(hit, x0_, t + hi);
+      resolve_contacts(t + hi, x0_);
       update_sides(p_.x);
+      update_obstacle_sides(t + hi);
       ++events;
       t += hi;
       remaining = (hi >= remaining) ? 0.0 : remaining - hi;
@@ -241,6 +327,12 @@ bool Simulation::step() {
     }
   }
   if (post_step) post_step(*this);
+  if (!obstacles_.empty()) {
+    obstacles_.poses().at_end(time());
+    if (!edges_.empty()) edges_.end_step(obstacles_.poses(), p_);
+    if (!spring_boxes_.empty()) spring_boxes_.move_out_all(obstacles_.poses(), p_);
+    obstacles_.end_step(time(), p_);
+  }
   return check_finite();
 }
 

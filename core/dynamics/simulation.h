@@ -11,7 +11,16 @@
 /// that normal component (the seed's "levíssima força na direção da normal") and friction acts
 /// on vt once per step. A particle remembers which side of each plane it is on, so it can
 /// never pass through the rectangle, whatever the step size.
+/// Obstacles (spheres, boxes, meshes, static or moving; obstacle_contacts.h) take part in the
+/// same event loop: one bisection finds the earliest contact of any kind, every particle's
+/// earliest contact (plane or obstacle) up to that time is resolved, and the rest of the step
+/// is integrated again. With edge_contacts, springs against boxes (spring_box_contacts.h) and
+/// against mesh edges (edge_contacts.h) join the same loop. A scene without obstacles steps
+/// exactly as before (bit for bit).
+#include "core/dynamics/edge_contacts.h"
 #include "core/dynamics/integrator.h"
+#include "core/dynamics/obstacle_contacts.h"
+#include "core/dynamics/spring_box_contacts.h"
 #include "core/scene/scene.h"
 
 #include <cstdint>
@@ -38,15 +47,17 @@ struct ContactCounters {
   long long bisections = 0;     ///< integrator calls spent bisecting
 };
 
-/// One resolved particle-plane contact, when the simulation logs them.
+/// One resolved particle-plane or particle-obstacle contact, when the simulation logs them.
 struct ContactEvent {
   long long step = 0;   ///< 1-based step during which the contact happened
   double time = 0.0;    ///< time of contact [s] (upper end of the bisection bracket)
   int particle = -1;
-  int plane = -1;
+  int plane = -1;       ///< -1 for an obstacle contact
   ContactKind kind = ContactKind::Elastic;
   Vec3 velocity_before = Vec3::Zero();
   Vec3 velocity_after = Vec3::Zero();
+  int obstacle = -1;    ///< -1 for a plane contact
+  int feature = -1;     ///< the obstacle's box face or mesh triangle (0 for a sphere)
 };
 
 class Simulation {
@@ -68,6 +79,12 @@ class Simulation {
   const ContactCounters& contacts() const { return counters_; }
   /// The (particle, plane) pairs in resting contact now.
   const std::vector<std::pair<int, int>>& resting_contacts() const { return resting_; }
+  /// The particle-obstacle contacts: resting contacts now, counters.
+  const ObstacleContacts& obstacle_contacts() const { return obstacles_; }
+  /// The spring-edge contacts of meshes and the spring-box contacts (empty unless the scene asks
+  /// for edge_contacts).
+  const EdgeContacts& edge_contacts() const { return edges_; }
+  const SpringBoxContacts& spring_box_contacts() const { return spring_boxes_; }
   double bisection_tolerance() const { return tol_; }
   /// Keep a log of every contact (off by default; the log grows with the run).
   void set_log_contacts(bool on) { log_contacts_ = on; }
@@ -85,10 +102,16 @@ class Simulation {
   };
   void accelerations(double t, const std::vector<Vec3>& x, const std::vector<Vec3>& v, std::vector<Vec3>& a);
   bool any_hit(const std::vector<Vec3>& x0, const std::vector<Vec3>& x1);
+  /// Planes, then obstacles over [loop start, t1].
+  bool any_contact(double t1, const std::vector<Vec3>& x0, const std::vector<Vec3>& x1);
   void collect_hits(const std::vector<Vec3>& x0, const std::vector<Vec3>& x1, std::vector<Hit>& hits);
+  /// Resolves every particle's earliest contact (plane or obstacle) over [loop start, t1].
+  void resolve_contacts(double t1, const std::vector<Vec3>& x0);
   void update_sides(const std::vector<Vec3>& x);
+  void update_obstacle_sides(double t1);
   void begin_step_resting(double t);
   void resolve_hit(const Hit& h, const std::vector<Vec3>& x0, double t_contact);
+  void resolve_obstacle_hit(const ObstacleHit& h, const std::vector<Vec3>& x0, double t_contact);
   void place_on_plane(int i, int p);
   bool check_finite();
 
@@ -108,6 +131,12 @@ class Simulation {
   std::vector<std::pair<int, int>> resting_scratch_;  // the next step's resting_, swapped in
   std::vector<Vec3> x0_, v0_, xm_, vm_, a_free_;
   std::vector<Hit> hits_;
+  ObstacleContacts obstacles_;
+  std::vector<ObstacleHit> obstacle_hits_;
+  EdgeContacts edges_;
+  std::vector<EdgeHit> edge_hits_;
+  SpringBoxContacts spring_boxes_;
+  std::vector<SpringBoxHit> spring_box_hits_;
   bool log_contacts_ = false;
   std::vector<ContactEvent> contact_log_;
 };

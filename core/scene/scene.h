@@ -9,6 +9,7 @@
 #include "core/dynamics/particles.h"
 #include "core/dynamics/plane_contact.h"
 #include "core/geometry/bounded_plane.h"
+#include "core/geometry/obstacle.h"
 
 #include <array>
 #include <cstdint>
@@ -27,6 +28,12 @@ struct Scene {
   Particles particles;
   ForceModel forces;
   std::vector<BoundedPlane> planes;
+  /// Spheres, boxes and triangle meshes, static or moving (core/geometry/obstacle.h).
+  std::vector<Obstacle> obstacles;
+  /// Whether springs are tested against the obstacles' edges (box edges, mesh feature edges), not
+  /// only particles against their faces (core/dynamics/edge_contacts.h). Off by default, as in
+  /// the seed's engine.
+  bool edge_contacts = false;
   ContactSettings contact;
 
   /// Cloth parameters, when the scene has a cloth (its particles and springs are appended to
