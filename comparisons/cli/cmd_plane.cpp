@@ -1,5 +1,6 @@
 // tecido plane --cases FILE.json [--engines a,b] --json
 #include "comparisons/cli/commands.h"
+#include "comparisons/cli/option_checks.h"
 #include "comparisons/engines/segment_plane_engines.h"
 #include "comparisons/io/plane_cases.h"
 
@@ -20,7 +21,7 @@ Command add_plane(CLI::App& app) {
   for (const auto& e : segment_plane_engines()) all += (all.empty() ? "" : ",") + e.name;
   o->engines = all;
   CLI::App* sub = app.add_subcommand("plane", "Segment vs bounded plane: hit and crossing fraction per engine");
-  sub->add_option("--cases", o->cases, "Cases file {\"cases\":[{\"id\",\"plane\",\"from\",\"to\"}]}")->required();
+  sub->add_option("--cases", o->cases, "Cases file {\"cases\":[{\"id\",\"plane\",\"from\",\"to\"}]}")->required()->check(non_empty());
   sub->add_option("--engines", o->engines, "Comma-separated engines (" + all + ")")->capture_default_str();
   sub->add_flag("--json", o->json, "Print JSON (the only output format; kept for the contract)");
   return [o]() {

@@ -12,9 +12,7 @@ namespace tecido::io {
 
 namespace {
 
-// The same names and values as comparisons/io/limits.h of the input-limits work; that header
-// replaces these once it is on main.
-constexpr std::size_t kMaxObstacles = 1024;
+// Mesh limits of this reader (kMaxObstacles comes from comparisons/io/limits.h).
 constexpr std::size_t kMaxMeshVertices = std::size_t{1} << 20;
 constexpr std::size_t kMaxMeshTriangles = std::size_t{1} << 21;
 /// Keyframes of one mesh, and vertex positions over all its frames.

@@ -22,14 +22,14 @@ bool segment_pierces_triangle(const Vec3& p, const Vec3& q, const Triangle& t) {
   return !(has_neg && has_pos);
 }
 
-void analyse_intersections(const std::vector<Vec3>& x, const std::vector<std::array<int, 3>>& triangles,
-                           const MeshTopology& topo, const std::vector<TrianglePair>& pairs, GiaResult& out) {
-  const int ne = static_cast<int>(topo.edges.size());
-  const int nv = topo.vertex_count;
-  GiaResult::Work& w = out.work;
+namespace {
 
-  // 1. Cut edges: an edge of one triangle of a pair piercing the other triangle.
-  out.cut.assign(ne, 0);
+using Triangles = std::vector<std::array<int, 3>>;
+
+/// Step 1. Cut edges: an edge of one triangle of a pair piercing the other triangle.
+void mark_cut_edges(const std::vector<Vec3>& x, const Triangles& triangles, const MeshTopology& topo,
+                    const std::vector<TrianglePair>& pairs, GiaResult& out) {
+  out.cut.assign(topo.edges.size(), 0);
   out.cut_edges = 0;
   for (const TrianglePair& pr : pairs) {
     for (int side = 0; side < 2; ++side) {
@@ -45,38 +45,45 @@ void analyse_intersections(const std::vector<Vec3>& x, const std::vector<std::ar
       }
     }
   }
+}
 
-  // 2. Components over uncut edges, labelled in order of their smallest vertex.
+/// Step 2. Components over uncut edges (breadth-first flood fill), labelled in order of their
+/// smallest vertex.
+void label_components(const MeshTopology& topo, GiaResult& out) {
+  const int nv = topo.vertex_count;
+  std::vector<int>& queue = out.work.queue;
   out.component.assign(nv, -1);
   out.component_size.clear();
-  w.queue.clear();
   for (int v0 = 0; v0 < nv; ++v0) {
     if (!topo.used[v0] || out.component[v0] >= 0) continue;
     const int c = static_cast<int>(out.component_size.size());
     out.component_size.push_back(0);
-    w.queue.clear();
-    w.queue.push_back(v0);
+    queue.clear();
+    queue.push_back(v0);
     out.component[v0] = c;
-    for (std::size_t head = 0; head < w.queue.size(); ++head) {
-      const int v = w.queue[head];
+    for (std::size_t head = 0; head < queue.size(); ++head) {
+      const int v = queue[head];
       ++out.component_size[c];
       for (int k = topo.adj_start[v]; k < topo.adj_start[v + 1]; ++k) {
         if (out.cut[topo.adj_edge[k]]) continue;
         const int u = topo.adj[k];
         if (out.component[u] < 0) {
           out.component[u] = c;
-          w.queue.push_back(u);
+          queue.push_back(u);
         }
       }
     }
   }
-  const int nc = static_cast<int>(out.component_size.size());
+}
 
-  // 3. Wrong-side regions: the smaller side of each separating cut edge.
+/// Step 3. Wrong-side regions: the smaller side of each separating cut edge (Baraff, Witkin and
+/// Kass 2003 assume the smaller region is the one on the wrong side).
+void mark_wrong_side(const MeshTopology& topo, GiaResult& out) {
+  const int nc = static_cast<int>(out.component_size.size());
   out.wrong_side.assign(nc, 0);
   out.unseparated_cut_edges = 0;
   out.ambiguous_cut_edges = 0;
-  for (int e = 0; e < ne; ++e) {
+  for (std::size_t e = 0; e < topo.edges.size(); ++e) {
     if (!out.cut[e]) continue;
     const int cu = out.component[topo.edges[e][0]], cv = out.component[topo.edges[e][1]];
     if (cu == cv) {
@@ -90,62 +97,70 @@ void analyse_intersections(const std::vector<Vec3>& x, const std::vector<std::ar
   out.regions.clear();
   for (int c = 0; c < nc; ++c)
     if (out.wrong_side[c]) out.regions.push_back(c);
+}
 
-  // 4. Pull directions: toward the partner regions (or the opposite triangles).
-  out.pull.assign(nc, Vec3::Zero());
-  out.pair_resolved.assign(pairs.size(), 0);
-  out.unresolved_pairs = 0;
-  if (out.regions.empty()) {
-    out.unresolved_pairs = static_cast<int>(pairs.size());
-    return;
-  }
-  w.centroid.assign(nc, Vec3::Zero());
-  for (int v = 0; v < nv; ++v) {
+/// The distinct wrong-side regions among triangle t's vertices, into r (at most 3); returns how many.
+int regions_of(const Triangles& triangles, const GiaResult& out, int t, int* r) {
+  int n = 0;
+  for (int v : triangles[t]) {
     const int c = out.component[v];
-    if (c >= 0 && out.wrong_side[c]) w.centroid[c] += x[v];
+    if (!out.wrong_side[c]) continue;
+    bool seen = false;
+    for (int k = 0; k < n; ++k) seen = seen || r[k] == c;
+    if (!seen) r[n++] = c;
   }
-  for (int c : out.regions) w.centroid[c] /= static_cast<double>(out.component_size[c]);
+  return n;
+}
+
+bool touches(const Triangles& triangles, const GiaResult& out, int t, int c) {
+  for (int v : triangles[t])
+    if (out.component[v] == c) return true;
+  return false;
+}
+
+/// Step 4a. For every intersecting pair: links between the wrong-side regions on its two
+/// triangles (both directions), and, for a region whose partner triangle is not in it, the
+/// partner's corners as a fallback target.
+void link_regions(const std::vector<Vec3>& x, const Triangles& triangles, const std::vector<TrianglePair>& pairs,
+                  GiaResult& out) {
+  GiaResult::Work& w = out.work;
+  const std::size_t nc = out.component_size.size();
   w.fallback_sum.assign(nc, Vec3::Zero());
   w.fallback_count.assign(nc, 0);
   w.links.clear();
-  auto regions_of = [&](int t, int* r) {
-    int n = 0;
-    for (int v : triangles[t]) {
-      const int c = out.component[v];
-      if (!out.wrong_side[c]) continue;
-      bool seen = false;
-      for (int k = 0; k < n; ++k) seen = seen || r[k] == c;
-      if (!seen) r[n++] = c;
-    }
-    return n;
-  };
-  auto touches = [&](int t, int c) {
-    for (int v : triangles[t])
-      if (out.component[v] == c) return true;
-    return false;
-  };
   for (const TrianglePair& pr : pairs) {
-    int r1[3], r2[3];
-    const int n1 = regions_of(pr[0], r1), n2 = regions_of(pr[1], r2);
-    for (int a = 0; a < n1; ++a)
-      for (int b = 0; b < n2; ++b)
-        if (r1[a] != r2[b]) {
-          w.links.push_back({r1[a], r2[b]});
-          w.links.push_back({r2[b], r1[a]});
+    int r[2][3];
+    const int n[2] = {regions_of(triangles, out, pr[0], r[0]), regions_of(triangles, out, pr[1], r[1])};
+    for (int a = 0; a < n[0]; ++a)
+      for (int b = 0; b < n[1]; ++b)
+        if (r[0][a] != r[1][b]) {
+          w.links.push_back({r[0][a], r[1][b]});
+          w.links.push_back({r[1][b], r[0][a]});
         }
     for (int side = 0; side < 2; ++side) {
-      const int* rs = side == 0 ? r1 : r2;
-      const int n = side == 0 ? n1 : n2;
       const int other = pr[1 - side];
-      for (int a = 0; a < n; ++a) {
-        if (touches(other, rs[a])) continue;
-        for (int v : triangles[other]) w.fallback_sum[rs[a]] += x[v];
-        w.fallback_count[rs[a]] += 3;
+      for (int a = 0; a < n[side]; ++a) {
+        if (touches(triangles, out, other, r[side][a])) continue;
+        for (int v : triangles[other]) w.fallback_sum[r[side][a]] += x[v];
+        w.fallback_count[r[side][a]] += 3;
       }
     }
   }
   std::sort(w.links.begin(), w.links.end());
   w.links.erase(std::unique(w.links.begin(), w.links.end()), w.links.end());
+}
+
+/// Step 4b. Pull directions: each wrong-side region toward the size-weighted centroid of its
+/// partner regions, or else toward its fallback target.
+void pull_directions(const std::vector<Vec3>& x, GiaResult& out) {
+  GiaResult::Work& w = out.work;
+  const std::size_t nc = out.component_size.size();
+  w.centroid.assign(nc, Vec3::Zero());
+  for (std::size_t v = 0; v < out.component.size(); ++v) {
+    const int c = out.component[v];
+    if (c >= 0 && out.wrong_side[c]) w.centroid[c] += x[v];
+  }
+  for (int c : out.regions) w.centroid[c] /= static_cast<double>(out.component_size[c]);
   std::size_t k = 0;
   for (int c : out.regions) {
     Vec3 sum = Vec3::Zero();
@@ -168,8 +183,10 @@ void analyse_intersections(const std::vector<Vec3>& x, const std::vector<std::ar
     const double len = d.norm();
     if (len > 0.0 && std::isfinite(len)) out.pull[c] = d / len;
   }
+}
 
-  // 5. Resolved pairs.
+/// Step 5. A pair is resolved when one of its vertices lies in a wrong-side region with a pull.
+void mark_resolved(const Triangles& triangles, const std::vector<TrianglePair>& pairs, GiaResult& out) {
   for (std::size_t p = 0; p < pairs.size(); ++p) {
     bool ok = false;
     for (int t : pairs[p])
@@ -180,6 +197,25 @@ void analyse_intersections(const std::vector<Vec3>& x, const std::vector<std::ar
     out.pair_resolved[p] = ok ? 1 : 0;
     if (!ok) ++out.unresolved_pairs;
   }
+}
+
+}  // namespace
+
+void analyse_intersections(const std::vector<Vec3>& x, const std::vector<std::array<int, 3>>& triangles,
+                           const MeshTopology& topo, const std::vector<TrianglePair>& pairs, GiaResult& out) {
+  mark_cut_edges(x, triangles, topo, pairs, out);
+  label_components(topo, out);
+  mark_wrong_side(topo, out);
+  out.pull.assign(out.component_size.size(), Vec3::Zero());
+  out.pair_resolved.assign(pairs.size(), 0);
+  out.unresolved_pairs = 0;
+  if (out.regions.empty()) {
+    out.unresolved_pairs = static_cast<int>(pairs.size());
+    return;
+  }
+  link_regions(x, triangles, pairs, out);
+  pull_directions(x, out);
+  mark_resolved(triangles, pairs, out);
 }
 
 }  // namespace tecido

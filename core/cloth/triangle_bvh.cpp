@@ -1,5 +1,7 @@
 #include "core/cloth/triangle_bvh.h"
 
+#include "core/platform/simd_level.h"
+
 #include <algorithm>
 #include <cfloat>
 #include <cmath>
@@ -96,17 +98,13 @@ TECIDO_BVH_TARGET_AVX512 unsigned leaf_mask16_avx512(const float* alo, const flo
   return box_mask16_avx512(alo, ahi, blo, bhi) & ~static_cast<unsigned>(share) & 0xFFFFu;
 }
 
-bool cpu_has_avx512f() {
-  __builtin_cpu_init();
-  return __builtin_cpu_supports("avx512f");
-}
 #endif
 
 }  // namespace
 
 bool TriangleBvh::wide_kernel_available() {
 #if TECIDO_BVH_AVX512
-  static const bool ok = cpu_has_avx512f();
+  static const bool ok = simd_level_allowed(SimdLevel::AVX512);  // the CPU has it and TECIDO_SIMD allows it
   return ok;
 #else
   return false;
@@ -223,6 +221,27 @@ void TriangleBvh::refit(const std::vector<Vec3>& x) {
     }
     vlo_[v][3] = vhi_[v][3] = 0.0f;
   }
+  refit_from_vertex_bounds();
+}
+
+void TriangleBvh::refit(const std::vector<Vec3>& x0, const std::vector<Vec3>& x1) {
+  if (nodes_.empty()) return;
+  const std::size_t nv = x0.size();
+  vlo_.resize(nv);
+  vhi_.resize(nv);
+  for (std::size_t v = 0; v < nv; ++v) {
+    for (int d = 0; d < 3; ++d) {
+      // float_down / float_up are monotone: the bounds of the min / max are the min / max of
+      // the bounds, so this contains both frames' outward boxes.
+      vlo_[v][d] = float_down(std::min(x0[v][d], x1[v][d]));
+      vhi_[v][d] = float_up(std::max(x0[v][d], x1[v][d]));
+    }
+    vlo_[v][3] = vhi_[v][3] = 0.0f;
+  }
+  refit_from_vertex_bounds();
+}
+
+void TriangleBvh::refit_from_vertex_bounds() {
   // Children always have larger indices than their parent: one reverse sweep suffices.
   for (std::size_t k = nodes_.size(); k-- > 0;) {
     Node& nd = nodes_[k];

@@ -44,6 +44,11 @@ class TriangleBvh {
   /// Recomputes every box from positions x (same vertex array the triangles index; finite).
   void refit(const std::vector<Vec3>& x);
 
+  /// Recomputes every box as the swept box of linear motion from x0 to x1: the union of the
+  /// boxes at both frames, which contains the triangle at every time in between (continuous
+  /// collision, core/cloth/continuous_self_collision.h). Finite positions, same sizes.
+  void refit(const std::vector<Vec3>& x0, const std::vector<Vec3>& x1);
+
   /// Appends to `out` every pair (i, j) of triangle ids, i < j, whose closed boxes overlap
   /// (touching counts) and that share no vertex index; each pair once, in a deterministic
   /// (traversal) order. Uses the boxes of the last build()/refit().
@@ -87,6 +92,8 @@ class TriangleBvh {
   static unsigned lanes_overlapping(const Node& b, const float lo[3], const float hi[3]);
   /// Bit k set when triangle (v0, v1, v2) shares a vertex with lane k's triangle of leaf b.
   static unsigned lanes_sharing(const LeafVerts& b, int v0, int v1, int v2);
+  /// Box refit from the per-vertex bounds vlo_, vhi_.
+  void refit_from_vertex_bounds();
 
   std::size_t tri_count_ = 0;
   std::vector<Node> nodes_;          ///< nodes_[0] is the root; children after their parent

@@ -144,7 +144,8 @@ TEST(ToleranceFile, RejectsBadFilesAndMissingKeys) {
     EXPECT_NE(std::string(e.what()).find("/order/roundoff_floor: missing tolerance"), std::string::npos) << e.what();
   }
   // The CLI: a tolerance file missing a key the suite needs is bad input, exit 2, no report.
-  const auto r = testing::run_cli("suite order --tolerances '" + (dir / "t4.json").string() + "' --out '" + (dir / "out").string() + "'");
+  testing::write_text(dir / "t5.json", R"({"order":{"bandwidth":0.15}})");
+  const auto r = testing::run_cli("suite order --tolerances '" + (dir / "t5.json").string() + "' --out '" + (dir / "out").string() + "'");
   EXPECT_EQ(r.code, 2) << r.err;
   EXPECT_NE(r.err.find("missing tolerance"), std::string::npos) << r.err;
   EXPECT_FALSE(std::filesystem::exists(dir / "out" / "report.json"));
