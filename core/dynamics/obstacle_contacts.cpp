@@ -191,10 +191,13 @@ bool ObstacleContacts::keep_resting(const ObstacleRest& r, const ObstaclePose& p
   const std::size_t i = static_cast<std::size_t>(r.particle), k = static_cast<std::size_t>(r.obstacle);
   const Obstacle& o = (*obstacles_)[k];
   const Vec3& x = p.x[i];
+  // Lifted off (by another contact, e.g. a spring held over an edge): no longer resting. The
+  // tolerance is far above the rounding of a placement, far below any motion.
+  const double lift_tol = kLiftTolerance * std::max(x.cwiseAbs().maxCoeff(), pose.center.cwiseAbs().maxCoeff());
   if (o.kind == ObstacleKind::Sphere) {
     const Vec3 rel = x - pose.center;
     const double len = rel.norm();
-    if (!(len > 0.0)) return false;
+    if (!(len > 0.0) || len - o.radius > lift_tol + kLiftTolerance * o.radius) return false;
     const Vec3 n = rel / len;
     const Vec3 vrel = p.v[i] - obstacle_surface_velocity(o, pose, x);
     const Vec3 vt = vrel - n * n.dot(vrel);
@@ -205,13 +208,17 @@ bool ObstacleContacts::keep_resting(const ObstacleRest& r, const ObstaclePose& p
     const Vec3 n = pose.rotation * box_face_normal(r.feature);
     if (a.dot(n) > 0.0) return false;
     const Vec3 q = pose.to_local(x);
+    const int axis = r.feature / 2;
+    const double out = ((r.feature & 1) ? q[axis] : -q[axis]) - o.half_extents[axis];
+    if (out > lift_tol + kLiftTolerance * o.half_extents.maxCoeff()) return false;
     for (int ax = 0; ax < 3; ++ax)
-      if (ax != r.feature / 2 && !(std::abs(q[ax]) <= o.half_extents[ax])) return false;
+      if (ax != axis && !(std::abs(q[ax]) <= o.half_extents[ax])) return false;
     return true;
   }
   const auto& t = o.triangles[static_cast<std::size_t>(r.feature)];
   const Vec3 n = triangle_normal_towards(pose, t, side_[slot(i, k, r.feature)]);
   if (a.dot(n) > 0.0) return false;
+  if (n.dot(x - pose.vertices[t[0]]) > lift_tol + kLiftTolerance * pose.vertices[t[0]].cwiseAbs().maxCoeff()) return false;
   const Vec3 w = triangle_projection_barycentric(pose, t, x);
   return w.minCoeff() >= 0.0;
 }

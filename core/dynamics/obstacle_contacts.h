@@ -20,7 +20,9 @@
 /// becomes a resting contact, as on planes: the obstacle cancels the normal part of the
 /// particle's acceleration while it pushes in, friction acts once per step, and the contact is
 /// released when the free acceleration pulls away (on a sphere, when it cannot hold the particle
-/// on the curve: a.n + |v_t|^2 / r > 0) or the particle leaves the face or triangle.
+/// on the curve: a.n + |v_t|^2 / r > 0), the particle leaves the face or triangle, or something
+/// else (a spring held over an edge, edge_contacts.h) lifted it off the surface by more than
+/// kLiftTolerance times the coordinates' size.
 #include "core/dynamics/obstacle_poses.h"
 #include "core/dynamics/particles.h"
 #include "core/dynamics/plane_contact.h"
@@ -94,6 +96,9 @@ class ObstacleContacts {
   void end_step(double t, Particles& p);
 
   const std::vector<ObstacleRest>& resting() const { return resting_; }
+  /// Relative height above its surface at which a resting particle counts as lifted off (2^-40:
+  /// about 4000 times a placement's rounding).
+  static constexpr double kLiftTolerance = 0x1p-40;
   const ObstacleCounters& counters() const { return counters_; }
 
  private:

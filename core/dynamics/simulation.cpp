@@ -19,7 +19,9 @@ Simulation::Simulation(const Scene& scene)
       p_(scene.particles),
       springs_(scene.forces.springs),
       integ_(scene.integrator),
-      obstacles_(scene_.obstacles, scene.particles.size()) {
+      obstacles_(scene_.obstacles, scene.particles.size()),
+      edges_(scene_.obstacles, scene_.forces.springs, scene_.particles.pinned, scene_.edge_contacts),
+      spring_boxes_(scene_.obstacles, scene_.forces.springs, scene_.particles.pinned, scene_.edge_contacts) {
   tol_ = scene_.contact.bisection_tolerance > 0.0 ? scene_.contact.bisection_tolerance : scene_.dt * 0x1.0p-20;
   accel_ = [this](double t, const std::vector<Vec3>& x, const std::vector<Vec3>& v, std::vector<Vec3>& a) {
     accelerations(t, x, v, a);
@@ -34,6 +36,10 @@ Simulation::Simulation(const Scene& scene)
   // free acceleration, else the normal's side). Mesh obstacles' triangles likewise.
   compute_accelerations(scene_.forces, springs_, p_.inv_mass, 0.0, p_.x, p_.v, a_free_);
   obstacles_.init_sides(p_, a_free_);
+  if (!edges_.empty()) {
+    obstacles_.poses().at_start(0.0);
+    edges_.init_sides(obstacles_.poses(), p_);
+  }
   for (std::size_t i = 0; i < n; ++i) {
     for (std::size_t k = 0; k < n_planes_; ++k) {
       const BoundedPlane& pl = scene_.planes[k];
@@ -59,7 +65,11 @@ void Simulation::accelerations(double t, const std::vector<Vec3>& x, const std::
 }
 
 bool Simulation::any_contact(double t1, const std::vector<Vec3>& x0, const std::vector<Vec3>& x1) {
-  return any_hit(x0, x1) || (!obstacles_.empty() && obstacles_.any_hit(t1, x0, x1, p_));
+  if (any_hit(x0, x1)) return true;
+  if (obstacles_.empty()) return false;
+  if (obstacles_.any_hit(t1, x0, x1, p_)) return true;  // sets the poses at t1
+  if (!spring_boxes_.empty() && spring_boxes_.any_hit(obstacles_.poses(), x0, x1)) return true;
+  return !edges_.empty() && edges_.any_hit(obstacles_.poses(), x0, x1);
 }
 
 bool Simulation::any_hit(const std::vector<Vec3>& x0, const std::vector<Vec3>& x1) {
@@ -145,6 +155,13 @@ void Simulation::resolve_hit(const Hit& h, const std::vector<Vec3>& x0, double t
   }
 }
 
+void Simulation::update_obstacle_sides(double t1) {
+  if (obstacles_.empty()) return;
+  obstacles_.update_sides(t1, p_.x);  // sets the poses at t1
+  if (!spring_boxes_.empty()) spring_boxes_.move_out_all(obstacles_.poses(), p_);
+  if (!edges_.empty()) edges_.update_sides(obstacles_.poses(), p_);
+}
+
 void Simulation::resolve_obstacle_hit(const ObstacleHit& h, const std::vector<Vec3>& x0, double t_contact) {
   const int i = h.particle;
   const Vec3 before = p_.v[i];
@@ -166,6 +183,9 @@ void Simulation::resolve_contacts(double t1, const std::vector<Vec3>& x0) {
     return;
   }
   obstacles_.collect(t1, x0, p_.x, p_, obstacle_hits_);
+  // Spring-edge contacts over the same motion, resolved after the particles' own.
+  if (!edges_.empty()) edges_.collect(obstacles_.poses(), x0, p_.x, edge_hits_);
+  if (!spring_boxes_.empty()) spring_boxes_.collect(obstacles_.poses(), x0, p_.x, spring_box_hits_);
   // Both lists are in particle order with at most one entry per particle: each particle's
   // earlier contact is resolved (a plane on a tie).
   std::size_t a = 0, b = 0;
@@ -184,10 +204,16 @@ void Simulation::resolve_contacts(double t1, const std::vector<Vec3>& x0) {
       ++a;
     }
   }
+  if (!spring_boxes_.empty()) spring_boxes_.resolve(spring_box_hits_, obstacles_.poses(), p_, scene_.contact);
+  if (edges_.empty()) return;
+  for (const EdgeHit& h : edge_hits_) edges_.resolve(h, obstacles_.poses(), p_, scene_.contact);
+  edges_.separate(edge_hits_, obstacles_.poses(), p_);
 }
 
 void Simulation::begin_step_resting(double t) {
-  if (resting_.empty() && obstacles_.resting().empty()) return;
+  if (resting_.empty() && obstacles_.resting().empty() && edges_.resting_count() == 0 &&
+      spring_boxes_.resting_count() == 0)
+    return;
   // Release contacts whose free acceleration pulls away or that slid off the rectangle; keep the
   // others on the plane with no normal velocity, and apply friction once per step.
   compute_accelerations(scene_.forces, springs_, p_.inv_mass, t, p_.x, p_.v, a_free_);
@@ -207,6 +233,11 @@ void Simulation::begin_step_resting(double t) {
   }
   resting_.swap(kept);
   obstacles_.begin_step(t, p_, a_free_, scene_.contact);
+  if (edges_.resting_count() > 0 || spring_boxes_.resting_count() > 0) {
+    obstacles_.poses().at_start(t);
+    edges_.begin_step(obstacles_.poses(), p_, a_free_, scene_.contact);
+    spring_boxes_.begin_step(obstacles_.poses(), p_, scene_.contact);
+  }
 }
 
 bool Simulation::check_finite() {
@@ -256,7 +287,7 @@ bool Simulation::step() {
       integ_.step(accel_, t, remaining, p_.x, p_.v);
       if (!any_contact(t + remaining, x0_, p_.x)) {
         update_sides(p_.x);
-        obstacles_.update_sides(t + remaining, p_.x);
+        update_obstacle_sides(t + remaining);
         break;
       }
       double hi = remaining;
@@ -288,7 +319,7 @@ bool Simulation::step() {
       }
       resolve_contacts(t + hi, x0_);
       update_sides(p_.x);
-      obstacles_.update_sides(t + hi, p_.x);
+      update_obstacle_sides(t + hi);
       ++events;
       t += hi;
       remaining = (hi >= remaining) ? 0.0 : remaining - hi;
@@ -296,7 +327,12 @@ bool Simulation::step() {
     }
   }
   if (post_step) post_step(*this);
-  if (!obstacles_.empty()) obstacles_.end_step(time(), p_);
+  if (!obstacles_.empty()) {
+    obstacles_.poses().at_end(time());
+    if (!edges_.empty()) edges_.end_step(obstacles_.poses(), p_);
+    if (!spring_boxes_.empty()) spring_boxes_.move_out_all(obstacles_.poses(), p_);
+    obstacles_.end_step(time(), p_);
+  }
   return check_finite();
 }
 

@@ -14,9 +14,13 @@
 /// Obstacles (spheres, boxes, meshes, static or moving; obstacle_contacts.h) take part in the
 /// same event loop: one bisection finds the earliest contact of any kind, every particle's
 /// earliest contact (plane or obstacle) up to that time is resolved, and the rest of the step
-/// is integrated again. A scene without obstacles steps exactly as before (bit for bit).
+/// is integrated again. With edge_contacts, springs against boxes (spring_box_contacts.h) and
+/// against mesh edges (edge_contacts.h) join the same loop. A scene without obstacles steps
+/// exactly as before (bit for bit).
+#include "core/dynamics/edge_contacts.h"
 #include "core/dynamics/integrator.h"
 #include "core/dynamics/obstacle_contacts.h"
+#include "core/dynamics/spring_box_contacts.h"
 #include "core/scene/scene.h"
 
 #include <cstdint>
@@ -77,6 +81,10 @@ class Simulation {
   const std::vector<std::pair<int, int>>& resting_contacts() const { return resting_; }
   /// The particle-obstacle contacts: resting contacts now, counters.
   const ObstacleContacts& obstacle_contacts() const { return obstacles_; }
+  /// The spring-edge contacts of meshes and the spring-box contacts (empty unless the scene asks
+  /// for edge_contacts).
+  const EdgeContacts& edge_contacts() const { return edges_; }
+  const SpringBoxContacts& spring_box_contacts() const { return spring_boxes_; }
   double bisection_tolerance() const { return tol_; }
   /// Keep a log of every contact (off by default; the log grows with the run).
   void set_log_contacts(bool on) { log_contacts_ = on; }
@@ -100,6 +108,7 @@ class Simulation {
   /// Resolves every particle's earliest contact (plane or obstacle) over [loop start, t1].
   void resolve_contacts(double t1, const std::vector<Vec3>& x0);
   void update_sides(const std::vector<Vec3>& x);
+  void update_obstacle_sides(double t1);
   void begin_step_resting(double t);
   void resolve_hit(const Hit& h, const std::vector<Vec3>& x0, double t_contact);
   void resolve_obstacle_hit(const ObstacleHit& h, const std::vector<Vec3>& x0, double t_contact);
@@ -124,6 +133,10 @@ class Simulation {
   std::vector<Hit> hits_;
   ObstacleContacts obstacles_;
   std::vector<ObstacleHit> obstacle_hits_;
+  EdgeContacts edges_;
+  std::vector<EdgeHit> edge_hits_;
+  SpringBoxContacts spring_boxes_;
+  std::vector<SpringBoxHit> spring_box_hits_;
   bool log_contacts_ = false;
   std::vector<ContactEvent> contact_log_;
 };
