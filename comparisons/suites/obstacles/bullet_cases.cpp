@@ -1,0 +1,118 @@
+#include "comparisons/suites/obstacles/bullet_cases.h"
+
+#include "comparisons/suites/obstacles/analytic_cases.h"
+#include "comparisons/suites/obstacles/block_scene.h"
+#include "comparisons/suites/obstacles/box_interior.h"
+#include "comparisons/suites/obstacles/theory.h"
+#include "comparisons/suites/sweep.h"
+#include "core/dynamics/simulation.h"
+#include "reference/bullet_obstacle_world.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace tecido::suites::obstacles {
+
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+/// What the suite measures of one engine's run, step end by step end.
+struct Track {
+  double t_onset = kNaN;
+  double max_penetration = 0.0;
+  int max_through = 0;
+  io::Json frames = io::Json::array();
+  io::Json unstable = nullptr;
+  double rest_height = kNaN;
+
+  io::Json json() const {
+    return {{"t_onset", num(t_onset)},   {"max_penetration", num(max_penetration)}, {"max_through", max_through},
+            {"frames", frames},         {"rest_height", num(rest_height)},         {"unstable", unstable}};
+  }
+};
+
+/// What observe() needs besides the state: the scene, its stiff springs when the obstacle is the
+/// block (else empty), the depth that counts as through, the frame interval.
+struct Watch {
+  const Scene* scene;
+  std::vector<std::array<int, 2>> springs;
+  double through_depth;
+  long long every;
+};
+
+/// One step end: penetration of every node into the obstacle, onset (a node within `contact`
+/// of the surface) and, for the block, the springs through it; a frame every `every` steps.
+void observe(Track& tr, const Watch& w, const std::vector<Vec3>& x, double t, long long k, double contact) {
+  const Scene& sc = *w.scene;
+  const Obstacle& o = sc.obstacles.front();
+  double deepest_node = -std::numeric_limits<double>::infinity();
+  for (const Vec3& p : x) deepest_node = std::max(deepest_node, inside_depth(o, t, p));
+  tr.max_penetration = std::max(tr.max_penetration, deepest_node);
+  if (std::isnan(tr.t_onset) && -deepest_node <= contact) tr.t_onset = t;
+  if (w.springs.empty()) return;
+  double deepest = 0.0;
+  const int through = springs_through_box(x, w.springs, block_of(sc), w.through_depth, &deepest);
+  tr.max_through = std::max(tr.max_through, through);
+  if (k % w.every == 0) tr.frames.push_back({num(t), through, num(deepest)});
+}
+
+double top_rest_height(const Scene& sc, const std::vector<Vec3>& x, bool block, int n) {
+  const Obstacle& o = sc.obstacles.front();
+  if (!block) {
+    const int c = sc.cloth_first_particle + (n / 2) * n + n / 2;
+    return -inside_depth(o, 0.0, x[c]);
+  }
+  double sum = 0.0;
+  int count = 0;
+  for (const Vec3& p : x)
+    if (std::abs(p.x() - o.center.x()) < o.half_extents.x() && std::abs(p.y() - o.center.y()) < o.half_extents.y() &&
+        p.z() > o.center.z()) {
+      sum += p.z() - (o.center.z() + o.half_extents.z());
+      ++count;
+    }
+  return count ? sum / count : kNaN;
+}
+
+io::Json run_both(const Settings& s, const Scene& sc, int n, bool block) {
+  const long long steps = std::llround(s.block_seconds / s.block_dt);
+  const Watch w{&sc, block ? stiff_springs(sc) : std::vector<std::array<int, 2>>{}, s.through_depth,
+                std::max(1LL, steps / s.block_frames)};
+  Track core, bt;
+  Simulation sim(sc);
+  sim.set_log_contacts(true);
+  reference::ObstacleWorldOptions opt;
+  opt.voxel_size = s.bullet_voxel;
+  opt.collision_margin = s.bullet_margin;
+  reference::BulletObstacleWorld bullet(sc, opt);
+  for (long long k = 1; k <= steps; ++k) {
+    if (core.unstable.is_null() && sim.step()) {
+      observe(core, w, sim.particles().x, sim.time(), k, 0.0);
+    } else if (core.unstable.is_null()) {
+      core.unstable = k;
+    }
+    if (bt.unstable.is_null() && bullet.step()) {
+      observe(bt, w, bullet.positions(), bullet.time(), k, opt.collision_margin + 1e-9);
+    } else if (bt.unstable.is_null()) {
+      bt.unstable = k;
+    }
+  }
+  core.t_onset = sim.contact_log().empty() ? kNaN : sim.contact_log().front().time;
+  core.rest_height = top_rest_height(sc, sim.particles().x, block, n);
+  bt.rest_height = top_rest_height(sc, bullet.positions(), block, n);
+  return {{"t_onset_expected", num(fall_time(s.cloth_height - opt.collision_margin, s.g))},
+          {"t_onset_core_expected", num(fall_time(s.cloth_height, s.g))},
+          {"contact_distance", num(opt.collision_margin)},
+          {"core", core.json()},
+          {"bullet", bt.json()},
+          {"not_modelled", bullet.not_modelled()}};
+}
+
+}  // namespace
+
+io::Json bullet_sphere_case(const Settings& s) { return run_both(s, sphere_scene(s, s.block_sides[0]), s.block_sides[0], false); }
+
+io::Json bullet_block_case(const Settings& s, int n) { return run_both(s, block_scene(s, n, false), n, true); }
+
+}  // namespace tecido::suites::obstacles

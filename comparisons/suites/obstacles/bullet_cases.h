@@ -1,0 +1,23 @@
+#pragma once
+/// The `obstacles` suite's runs of Bullet's classic soft body with rigid obstacles
+/// (reference/bullet_obstacle_world.h) beside core on the same scene (reference build only).
+/// Everything about Bullet's state is measured here from its node positions: contact onset,
+/// penetration (Bullet keeps a margin, not a hard constraint), rest height, springs through the
+/// block.
+#include "comparisons/io/json_reader.h"
+#include "comparisons/suites/obstacles/settings.h"
+
+namespace tecido::suites::obstacles {
+
+/// The 11 x 11 cloth on the sphere (block_scene.h sphere_scene), core and Bullet:
+/// {"t_onset_expected" (analytic fall to Bullet's contact distance), "t_onset_core_expected",
+/// "core": {...}, "bullet": {...}, "not_modelled": [...]}; each engine's object holds "t_onset",
+/// "max_penetration", "rest_height" (the centre node above the top), "max_through" (0 here),
+/// "frames" ([[t, springs through, deepest], ...], empty here), "unstable" (step or null).
+io::Json bullet_sphere_case(const Settings& s);
+
+/// The n x n cloth on the block, edges off, core and Bullet, the same fields; "rest_height" is
+/// the mean height above the top of the nodes over the top face; frames as block_case.h.
+io::Json bullet_block_case(const Settings& s, int n);
+
+}  // namespace tecido::suites::obstacles

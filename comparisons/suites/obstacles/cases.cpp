@@ -1,0 +1,39 @@
+#include "comparisons/suites/obstacles/cases.h"
+
+#include "comparisons/suites/obstacles/analytic_cases.h"
+#include "comparisons/suites/obstacles/block_case.h"
+#ifdef TECIDO_HAVE_REFERENCE
+#include "comparisons/suites/obstacles/bullet_cases.h"
+#endif
+
+#include <fmt/format.h>
+
+namespace tecido::suites::obstacles {
+
+std::string step_label(double h) { return fmt::format("{:g}", h); }
+
+std::string block_name(int n, bool edge_contacts) {
+  return fmt::format("block/{}/{}", n, edge_contacts ? "edges-on" : "edges-off");
+}
+
+std::string bullet_block_name(int n) { return fmt::format("bullet/block/{}", n); }
+
+std::vector<Case> cases(const Settings& s) {
+  std::vector<Case> out;
+  out.push_back({"sphere-drop", [s] { return sphere_drop_case(s); }});
+  out.push_back({"slide", [s] { return slide_case(s); }});
+  for (const char* kind : {"sphere", "box"})
+    out.push_back({std::string("rest/") + kind, [s, k = std::string(kind)] { return rest_case(s, k); }});
+  for (const std::string& scene : fast_scene_names())
+    for (double h : s.fast_steps)
+      out.push_back({"fast/" + scene + "/h=" + step_label(h), [s, scene, h] { return fast_case(s, scene, h); }});
+  for (int n : s.block_sides)
+    for (bool on : {false, true}) out.push_back({block_name(n, on), [s, n, on] { return block_case(s, n, on); }});
+#ifdef TECIDO_HAVE_REFERENCE
+  out.push_back({"bullet/sphere", [s] { return bullet_sphere_case(s); }});
+  for (int n : s.block_sides) out.push_back({bullet_block_name(n), [s, n] { return bullet_block_case(s, n); }});
+#endif
+  return out;
+}
+
+}  // namespace tecido::suites::obstacles
