@@ -10,8 +10,10 @@
 namespace tecido::suites::obstacles {
 
 /// The 11 x 11 cloth on the sphere (block_scene.h sphere_scene), core and Bullet:
-/// {"t_onset_expected" (analytic fall to Bullet's contact distance), "t_onset_core_expected",
-/// "core": {...}, "bullet": {...}, "not_modelled": [...]}; each engine's object holds "t_onset",
+/// {"t_onset_expected" (analytic fall to the surface), "t_contact_core" (core's first bisected
+/// contact), "contact_distance" (Bullet's margin), "core": {...}, "bullet": {...},
+/// "not_modelled": [...]}; each engine's object holds "t_onset" (first step end at which a node's
+/// velocity leaves free fall by more than 1e-6 m/s: the cloth falls flat until it touches),
 /// "max_penetration", "rest_height" (the centre node above the top), "max_through" (0 here),
 /// "frames" ([[t, springs through, deepest], ...], empty here), "unstable" (step or null).
 io::Json bullet_sphere_case(const Settings& s);

@@ -48,6 +48,10 @@ void declare_block(CheckList& c, const Settings& s, const Tolerances& tol) {
         c.declare(b + "/max_springs_through", tol.at_most(p("springs_through_edge_contacts")),
                   "most springs through the block's interior at any step end, edge contacts on");
     }
+  c.declare("obstacles/block/seed_direction/share_ratio", tol.at_most(p("seed_share_ratio")),
+            "edges off: (most springs through / springs) of the finer cloth over the coarser one's");
+  c.declare("obstacles/block/seed_direction/depth_ratio", tol.at_most(p("seed_depth_ratio")),
+            "edges off: deepest spring through the block, finer cloth over coarser");
 }
 
 void fail_all(CheckList& checks, const Case& c, const std::string& reason) {
@@ -87,6 +91,19 @@ CheckList declare_checks(const Settings& s, const Tolerances& tol, bool referenc
   declare_block(c, s, tol);
   if (reference) declare_bullet_checks(c, s, tol);
   return c;
+}
+
+void record_direction(CheckList& checks, const Settings& s, const io::Json& by_name) {
+  const std::string b = "obstacles/block/seed_direction/";
+  const io::Json& coarse = by_name.at(block_name(s.block_sides[0], false));
+  const io::Json& fine = by_name.at(block_name(s.block_sides[1], false));
+  for (const io::Json* r : {&coarse, &fine}) {
+    if (const std::string* err = case_error(*r)) return checks.fail_pending(b, "a block run threw: " + *err);
+    if (!r->at("unstable").is_null()) return checks.fail_pending(b, "a block run went unstable");
+  }
+  auto share = [](const io::Json& r) { return r.at("max_through").get<double>() / r.at("springs").get<double>(); };
+  checks.set(b + "share_ratio", share(fine) / share(coarse));
+  checks.set(b + "depth_ratio", get_num(fine.at("max_spring_depth")) / get_num(coarse.at("max_spring_depth")));
 }
 
 void record(CheckList& checks, const Settings& s, const Case& c, const io::Json& result) {

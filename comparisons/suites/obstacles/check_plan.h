@@ -16,4 +16,9 @@ CheckList declare_checks(const Settings& s, const Tolerances& tol, bool referenc
 /// check of the case with the reason.
 void record(CheckList& checks, const Settings& s, const Case& c, const io::Json& result);
 
+/// The seed's direction (figs 10-13: less cutting with more particles), from the two edges-off
+/// block runs in `by_name` (case name -> result): share and depth ratios, finer over coarser; a
+/// missing or failed run fails both with the reason.
+void record_direction(CheckList& checks, const Settings& s, const io::Json& by_name);
+
 }  // namespace tecido::suites::obstacles
