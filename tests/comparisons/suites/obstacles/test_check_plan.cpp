@@ -72,7 +72,8 @@ TEST(ObstaclesCheckPlan, TighteningABandFlipsTheCheckToFailed) {
   EXPECT_TRUE(find(loose.finish(), "obstacles/sphere-drop/contact_time_error").pass);
   CheckList tight = declare_checks(s, scaled(0.1), false);  // band 1e-4 steps = 1e-7 s
   record(tight, s, named("sphere-drop"), drop_result(0.5 + error));
-  const Check& c = find(tight.finish(), "obstacles/sphere-drop/contact_time_error");
+  const std::vector<Check> done = tight.finish();
+  const Check& c = find(done, "obstacles/sphere-drop/contact_time_error");
   EXPECT_FALSE(c.pass);
   EXPECT_NEAR(c.value, error, 1e-15);
 }
