@@ -4,6 +4,7 @@
 #include "comparisons/suites/obstacles/block_case.h"
 #ifdef TECIDO_HAVE_REFERENCE
 #include "comparisons/suites/obstacles/bullet_cases.h"
+#include "comparisons/suites/obstacles/fcl_cases.h"
 #endif
 
 #include <fmt/format.h>
@@ -17,6 +18,8 @@ std::string block_name(int n, bool edge_contacts) {
 }
 
 std::string bullet_block_name(int n) { return fmt::format("bullet/block/{}", n); }
+
+std::string fcl_block_name(int n) { return fmt::format("fcl/block/{}", n); }
 
 std::vector<Case> cases(const Settings& s) {
   std::vector<Case> out;
@@ -32,6 +35,7 @@ std::vector<Case> cases(const Settings& s) {
 #ifdef TECIDO_HAVE_REFERENCE
   out.push_back({"bullet/sphere", [s] { return bullet_sphere_case(s); }});
   for (int n : s.block_sides) out.push_back({bullet_block_name(n), [s, n] { return bullet_block_case(s, n); }});
+  for (int n : s.block_sides) out.push_back({fcl_block_name(n), [s, n] { return fcl_block_case(s, n); }});
 #endif
   return out;
 }

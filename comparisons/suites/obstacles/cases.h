@@ -22,10 +22,12 @@ std::string step_label(double h);
 std::string block_name(int n, bool edge_contacts);
 /// "bullet/block/<n>" and "bullet/sphere": the Bullet runs of the scenes (reference build only).
 std::string bullet_block_name(int n);
+/// "fcl/block/<n>": FCL's contact time on the block scene (reference build only, reported).
+std::string fcl_block_name(int n);
 
 /// Every case, in a fixed order: analytic (sphere drop, slide, rest on sphere and box), fast
 /// (scene-major, then step), block (side-major, edges off then on), then, in the reference build,
-/// the Bullet runs (sphere, then each block side).
+/// the Bullet runs (sphere, then each block side) and FCL's contact times (each block side).
 std::vector<Case> cases(const Settings& s);
 
 }  // namespace tecido::suites::obstacles

@@ -4,10 +4,11 @@
 /// a slide with the seed's friction, resting, fast particles and huge steps: no step ends inside);
 /// the seed's cloth-on-a-block artefact (figs 10-13) as a table of springs through the block per
 /// frame at 121 and 484 particles, edge contacts off and on; and, in the reference build, Bullet's
-/// classic soft body on the same scenes.
+/// classic soft body on the same scenes and FCL's continuous test as a second opinion on contact
+/// times.
 ///
 /// Layout: settings.h (what runs), theory.* (closed forms), box_interior.* (the artefact's
-/// measurement), analytic_cases.*, block_scene.*, block_case.*, bullet_cases.* (the cases),
+/// measurement), analytic_cases.*, block_scene.*, block_case.*, bullet_cases.*, fcl_cases.* (the cases),
 /// cases.* (the table), check_plan.* and bullet_checks.* (checks declared before anything runs),
 /// obstacles_report.* and block_report.cpp (report); this file builds the sweep and assembles.
 #include "comparisons/suites/suite.h"
