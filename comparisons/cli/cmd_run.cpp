@@ -16,7 +16,6 @@
 #include "comparisons/io/frame_writer.h"
 #include "comparisons/io/input_error.h"
 #include "comparisons/io/limits.h"
-#include "comparisons/io/obstacle_surfaces.h"
 #include "comparisons/io/output_dir.h"
 #include "comparisons/io/run_result.h"
 #include "comparisons/io/scene_json.h"
@@ -83,8 +82,7 @@ std::string run_with_frames(Simulation& sim, const Scene& scene, const RunOption
   auto capture = [&](const Simulation& s) {
     const long long k = s.steps_done();
     const Particles& p = s.particles();
-    if (k % every == 0 || k == n)
-      frames.write(k, s.time(), p.x, p.v, scene.triangles, io::obstacle_surfaces(scene.obstacles, s.time()));
+    if (k % every == 0 || k == n) frames.write(k, s.time(), p.x, p.v, scene.triangles, io::obstacle_surfaces(scene.obstacles, s.time()));
     for (long long key : keys)
       if (k == key && (key_frames.empty() || key_frames.back().step != k)) {
         key_frames.push_back({k, s.time(), p.x});

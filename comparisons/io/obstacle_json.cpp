@@ -1,5 +1,6 @@
 #include "comparisons/io/obstacle_json.h"
 
+#include "comparisons/io/limits.h"
 #include "comparisons/io/obj_mesh.h"
 #include "comparisons/io/scene_json.h"
 #include "core/geometry/orient_predicates.h"
@@ -12,9 +13,6 @@ namespace tecido::io {
 
 namespace {
 
-// Mesh limits of this reader (kMaxObstacles comes from comparisons/io/limits.h).
-constexpr std::size_t kMaxMeshVertices = std::size_t{1} << 20;
-constexpr std::size_t kMaxMeshTriangles = std::size_t{1} << 21;
 /// Keyframes of one mesh, and vertex positions over all its frames.
 constexpr std::size_t kMaxMeshFrames = 100000;
 constexpr std::size_t kMaxMeshFrameVertices = std::size_t{1} << 23;

@@ -123,6 +123,8 @@ void check_list_sizes(const JsonReader& r, const Json& doc) {
   if (doc.contains("springs"))
     r.at_most(r.require_array(doc["springs"], "/springs").size(), "/springs", kMaxSprings, "springs");
   if (doc.contains("planes")) r.at_most(r.require_array(doc["planes"], "/planes").size(), "/planes", kMaxPlanes, "planes");
+  if (doc.contains("obstacles"))
+    r.at_most(r.require_array(doc["obstacles"], "/obstacles").size(), "/obstacles", kMaxObstacles, "obstacles");
 }
 
 void read_contact(const JsonReader& r, const Json& c, ContactSettings& contact) {
@@ -141,8 +143,7 @@ void read_contact(const JsonReader& r, const Json& c, ContactSettings& contact) 
         static_cast<int>(r.integer(c["max_events_per_step"], "/contact/max_events_per_step", 1, 1000000));
 }
 
-/// needs_k: every free particle must give its elasticity (a plane, or an obstacle without its own
-/// elasticity, can hit it).
+/// `needs_k`: every free particle needs its own k (a plane, or an obstacle without elasticity, can hit it).
 void read_particles(const JsonReader& r, const Json& ps, bool needs_k, Particles& particles) {
   r.require_array(ps, "/particles");
   for (std::size_t k = 0; k < ps.size(); ++k) {

@@ -7,6 +7,9 @@ namespace tecido::io {
 double elements_per_step(const Scene& scene) {
   const auto n = static_cast<double>(scene.particles.size());
   double e = kStepOverhead + n + static_cast<double>(scene.forces.springs.size()) + n * static_cast<double>(scene.planes.size());
+  // Every particle against every obstacle, and a mesh obstacle's triangles moved every step.
+  e += n * static_cast<double>(scene.obstacles.size());
+  for (const Obstacle& o : scene.obstacles) e += static_cast<double>(o.triangles.size());
   if (scene.self_collision) e += kTriangleWeight * static_cast<double>(scene.triangles.size());
   return e;
 }

@@ -17,8 +17,8 @@ constexpr double kStepOverhead = 16.0;
 /// the seed's scene; a crumpled cloth, with many more contact pairs, costs more).
 constexpr double kTriangleWeight = 10.0;
 
-/// What one step costs, in elements: kStepOverhead + particles + springs + particles x planes +
-/// kTriangleWeight x triangles (with self-collision).
+/// What one step costs, in elements: kStepOverhead + particles + springs + particles x (planes +
+/// obstacles) + obstacle mesh triangles + kTriangleWeight x triangles (with self-collision).
 double elements_per_step(const Scene& scene);
 
 /// Empty when `steps` steps of `scene` fit in `max_work` element-steps; otherwise the problem,

@@ -106,9 +106,9 @@ std::optional<ContactKind> ObstacleContacts::resolve(const ObstacleHit& h, doubl
   if (o.kind == ObstacleKind::Sphere) {
     // Where the relative path reaches the sphere, on the sphere at t1.
     const Vec3 r = (x0[i] - a.center) + h.s * ((p.x[i] - b.center) - (x0[i] - a.center));
-    const Vec3 on = place_on_sphere(r, o.radius);
-    n = on.normalized();
-    p.x[i] = b.center + on;
+    Vec3 x = b.center + r;
+    place_on_feature(i, k, 0, b, x, n);  // on the sphere, and outside it after rounding
+    p.x[i] = x;
   } else if (o.kind == ObstacleKind::Box) {
     const Vec3 q0 = a.to_local(x0[i]), q1 = b.to_local(p.x[i]);
     Vec3 x = b.to_world(project_on_box_face(q0 + h.s * (q1 - q0), o.half_extents, h.feature));
@@ -164,6 +164,12 @@ void ObstacleContacts::place_on_feature(std::size_t i, std::size_t k, int featur
     const Vec3 on = place_on_sphere(x - pose.center, o.radius);
     normal = on.normalized();
     x = pose.center + on;
+    // Adding the centre rounds: the world point may be inside again. Move it out by ulps.
+    double step = 0x1p-52 * std::max({x.cwiseAbs().maxCoeff(), o.radius, 1e-300});
+    for (int tries = 0; tries < 64 && inside_sphere(x - pose.center, o.radius); ++tries) {
+      x += step * normal;
+      step *= 2.0;
+    }
     return;
   }
   if (o.kind == ObstacleKind::Box) {
@@ -197,7 +203,9 @@ bool ObstacleContacts::keep_resting(const ObstacleRest& r, const ObstaclePose& p
   if (o.kind == ObstacleKind::Sphere) {
     const Vec3 rel = x - pose.center;
     const double len = rel.norm();
-    if (!(len > 0.0) || len - o.radius > lift_tol + kLiftTolerance * o.radius) return false;
+    // No lift-off test: sliding along the tangent ends above the curve by about (v dt)^2 / 2r
+    // every step; the particle is put back on the sphere below, or released by the pull test.
+    if (!(len > 0.0)) return false;
     const Vec3 n = rel / len;
     const Vec3 vrel = p.v[i] - obstacle_surface_velocity(o, pose, x);
     const Vec3 vt = vrel - n * n.dot(vrel);

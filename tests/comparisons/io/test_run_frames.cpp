@@ -3,11 +3,13 @@
 #include "tests/support/cli_runner.h"
 #include "comparisons/io/frame_writer.h"
 #include "comparisons/io/gnuplot.h"
+#include "comparisons/io/obstacle_surfaces.h"
 #include "comparisons/io/scene_json.h"
 
 #include <nlohmann/json.hpp>
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <sstream>
 
 namespace tecido {
@@ -105,6 +107,46 @@ TEST(FrameWriter, PointCloudWithoutTriangles) {
   const std::string vtk = io::vtk_frame_text(x, {}, {}, "t");
   EXPECT_NE(vtk.find("VERTICES 2 4\n1 0\n1 1\n"), std::string::npos);
   EXPECT_EQ(vtk.find("POINT_DATA"), std::string::npos);
+}
+
+TEST(FrameWriter, ObstaclesFollowTheParticlesAsTheirOwnObjectsAndCells) {
+  const std::vector<Vec3> x = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0)};
+  const std::vector<std::array<int, 3>> cloth = {{0, 1, 2}};
+  io::SurfaceMesh tri;
+  tri.vertices = {Vec3(0, 0, -1), Vec3(2, 0, -1), Vec3(0, 2, -1)};
+  tri.triangles = {{0, 2, 1}};
+  const std::string obj = io::obj_frame_text(x, cloth, "c", {tri});
+  EXPECT_EQ(obj,
+            "# c\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"
+            "o obstacle_0\nv 0 0 -1\nv 2 0 -1\nv 0 2 -1\nf 4 6 5\n");
+  const std::string vtk = io::vtk_frame_text(x, x, cloth, "t", {tri});
+  EXPECT_NE(vtk.find("POINTS 6 double\n"), std::string::npos);
+  EXPECT_NE(vtk.find("POLYGONS 2 8\n3 0 1 2\n3 3 5 4\n"), std::string::npos);
+  EXPECT_NE(vtk.find("POINT_DATA 6\n"), std::string::npos);
+  EXPECT_NE(vtk.find("0 0 0\n0 0 0\n0 0 0\nCELL_DATA 2\nSCALARS body int 1\nLOOKUP_TABLE default\n0\n1\n"),
+            std::string::npos);
+}
+
+TEST(ObstacleSurfaces, BoxAndMovingSphereAtTheirPoses) {
+  Obstacle box;
+  box.kind = ObstacleKind::Box;
+  box.center = Vec3(1, 2, 3);
+  box.half_extents = Vec3(0.5, 0.25, 0.125);
+  box.velocity = Vec3(1, 0, 0);
+  Obstacle ball;
+  ball.kind = ObstacleKind::Sphere;
+  ball.radius = 0.5;
+  ball.velocity = Vec3(0, 0, 2);
+  const auto s = io::obstacle_surfaces({box, ball}, 0.5);
+  ASSERT_EQ(s.size(), 2u);
+  EXPECT_EQ(s[0].vertices.size(), 8u);
+  EXPECT_EQ(s[0].triangles.size(), 12u);
+  for (const Vec3& v : s[0].vertices) {  // every corner at (1.5, 2, 3) + (+-0.5, +-0.25, +-0.125)
+    EXPECT_NEAR(std::abs(v.x() - 1.5), 0.5, 1e-12);
+    EXPECT_NEAR(std::abs(v.y() - 2.0), 0.25, 1e-12);
+    EXPECT_NEAR(std::abs(v.z() - 3.0), 0.125, 1e-12);
+  }
+  for (const Vec3& v : s[1].vertices) EXPECT_NEAR((v - Vec3(0, 0, 1)).norm(), 0.5, 1e-12);
 }
 
 struct BadKey {

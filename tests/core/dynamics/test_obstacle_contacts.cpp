@@ -2,7 +2,9 @@
 // rebound of a drop, an oblique hit reflected about the sphere's normal, a moving sphere hitting a
 // particle at rest (eq. 9 relative to the surface), the obstacle's elasticity replacing the
 // particle's, friction on a box face step by step, resting without sinking, thin boxes at
-// steps up to 10 s and a box sweeping through particles: never a step ending inside.
+// steps up to 10 s and a box sweeping through particles: never a step ending inside. Spheres off the
+// origin, still or moving, at steps up to 10 s; a particle sliding over a sphere without chattering;
+// a spring grid on an off-centre sphere never left inside by rounding.
 #include "core/dynamics/simulation.h"
 #include "core/geometry/segment_box.h"
 #include "core/geometry/segment_sphere.h"
@@ -200,6 +202,100 @@ TEST(ObstacleContacts, RotatingBarPushesAParticleAtTheAngleItReachesIt) {
   ASSERT_FALSE(sim.contact_log().empty());
   EXPECT_NEAR(sim.contact_log().front().time, std::acos(0.05 / 0.8), 1e-6);
   EXPECT_EQ(sim.contact_log().front().feature, 3);  // +y
+}
+
+TEST(ObstacleContacts, OffCentreSphereStillOrMovingIsNeverEndedInsideAtStepsUpTo10s) {
+  // A sphere whose centre is not a round number (centre + offset rounds: a placement must be
+  // nudged out after adding it), still or moving across the particle's path, a particle at
+  // 1 km/s under gravity, every integrator, steps from 1 ms to 10 s: no step ends inside.
+  const Vec3 c(0.3, 0.7, -0.1);
+  for (const Vec3& vel : {Vec3(0, 0, 0), Vec3(0.7, -0.3, 0.9)}) {
+    for (IntegratorKind integ : kAll) {
+      for (double dt : {1e-3, 0.1, 1.0, 10.0}) {
+        Scene s = one_particle(c + Vec3(0.01, 0.02, 3), Vec3(0, 0, -1000), 0.3, integ, dt, true);
+        Obstacle o = sphere(c, 0.3);
+        o.velocity = vel;
+        s.obstacles.push_back(o);
+        Simulation sim(s);
+        ObstaclePose pose;
+        for (int n = 0; n < 30; ++n) {
+          if (!sim.step()) break;  // an explicit integrator may go unstable bouncing; never through
+          obstacle_pose_at(o, sim.time(), pose);
+          ASSERT_FALSE(inside_sphere(sim.particles().x[0] - pose.center, o.radius))
+              << integrator_name(integ) << " dt " << dt << " step " << n;
+        }
+        EXPECT_GT(sim.contacts().events + sim.contacts().cap_hits, 0);
+      }
+    }
+  }
+}
+
+TEST(ObstacleContacts, RestsOnAnOffCentreSphereTopWithoutEvents) {
+  // Dropped 1 cm onto the top of an off-centre sphere, k = 0: one contact, then it rests there for
+  // 10^4 steps, on the sphere, with no further contact event (a placement left inside by rounding
+  // would be found again every step).
+  const Vec3 c(0.3, 0.7, -0.1);
+  Scene s = one_particle(c + Vec3(0, 0, 0.31), Vec3::Zero(), 0.0, IntegratorKind::Symplectic, 0.01, true);
+  s.obstacles.push_back(sphere(c, 0.3));
+  Simulation sim(s);
+  for (int n = 0; n < 10000; ++n) {
+    ASSERT_TRUE(sim.step());
+    ASSERT_FALSE(inside_sphere(sim.particles().x[0] - c, 0.3)) << "step " << n;
+  }
+  EXPECT_LE(sim.contacts().events, 2);
+  EXPECT_NEAR((sim.particles().x[0] - c).norm(), 0.3, 1e-12);
+  EXPECT_NEAR(sim.particles().x[0].x(), c.x(), 1e-12);
+  EXPECT_EQ(sim.obstacle_contacts().counters().guard_corrections, 0);
+}
+
+TEST(ObstacleContacts, SlidesOverASphereWithoutChattering) {
+  // Dropped 1 cm onto a sphere 0.1 m off its top, k = 0.2: after a few bounces it rests and slides
+  // down the curve (each step along the tangent ends (v h)^2 / 2r above it: no reason to let go)
+  // until the curve can no longer hold it, then falls free. A handful of contacts in all, not one
+  // per step.
+  const Vec3 c(0, 0, 0);
+  Scene s = one_particle(Vec3(0.1, 0, std::sqrt(0.09 - 0.01) + 0.01), Vec3::Zero(), 0.2, IntegratorKind::Symplectic,
+                         0.002, true);
+  s.obstacles.push_back(sphere(c, 0.3));
+  Simulation sim(s);
+  for (int n = 0; n < 1500; ++n) {
+    ASSERT_TRUE(sim.step());
+    ASSERT_FALSE(inside_sphere(sim.particles().x[0] - c, 0.3)) << "step " << n;
+  }
+  EXPECT_LE(sim.contacts().events, 10);
+  EXPECT_LT(sim.particles().x[0].z(), -1.0);  // it left the sphere and fell
+}
+
+TEST(ObstacleContacts, SpringGridOnAnOffCentreSphereNeverEndsAStepInside) {
+  // A 7 x 7 grid of particles and springs dropped on an off-centre sphere: placements on the sphere
+  // must stay outside after the centre is added (centre + offset rounds), or the next interval
+  // starts inside. No particle inside after any step, and no end-of-step guard needed.
+  const Vec3 c(0.3, 0.7, -0.1);
+  Scene s;
+  s.dt = 0.002;
+  s.forces.gravity = Vec3(0, 0, -kG);
+  s.forces.air_drag = 0.001;
+  const int n = 7;
+  const double d = 0.6 / (n - 1);
+  for (int r = 0; r < n; ++r)
+    for (int q = 0; q < n; ++q)
+      s.particles.add(c + Vec3(-0.3 + d * q, -0.3 + d * r, 0.4), Vec3::Zero(), 0.01, 0.2, false);
+  for (int r = 0; r < n; ++r)
+    for (int q = 0; q < n; ++q) {
+      if (q + 1 < n) s.forces.springs.push_back(Spring{r * n + q, r * n + q + 1, 20.0, d, 0.0});
+      if (r + 1 < n) s.forces.springs.push_back(Spring{r * n + q, (r + 1) * n + q, 20.0, d, 0.0});
+    }
+  Obstacle o = sphere(c, 0.3);
+  o.friction = 0.5;
+  s.obstacles.push_back(o);
+  Simulation sim(s);
+  for (int k = 0; k < 1000; ++k) {
+    ASSERT_TRUE(sim.step());
+    for (int i = 0; i < n * n; ++i)
+      ASSERT_FALSE(inside_sphere(sim.particles().x[i] - c, 0.3)) << "particle " << i << " step " << k;
+  }
+  EXPECT_GT(sim.obstacle_contacts().counters().contacts, 0);
+  EXPECT_EQ(sim.obstacle_contacts().counters().guard_corrections, 0);
 }
 
 TEST(ObstacleContacts, PlanesAloneStepAsBefore) {
