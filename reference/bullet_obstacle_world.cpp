@@ -165,6 +165,10 @@ void BulletObstacleWorld::Impl::report() {
   if (!scene.forces.springs.empty())
     not_modelled.push_back("Hooke springs: links are position constraints (kLST = " + note_number(options.klst) +
                            ", piterations = " + std::to_string(options.piterations) + "), not forces ks (|x| - l)");
+  if (scene.forces.air_drag && *scene.forces.air_drag != 0.0)
+    not_modelled.push_back("air_drag: no linear drag force is applied (kDG = 0, kDP = " + note_number(options.kdp) + ")");
+  if (std::any_of(scene.forces.springs.begin(), scene.forces.springs.end(), [](const Spring& sp) { return sp.damping != 0.0; }))
+    not_modelled.push_back("spring damping: links have no per-link damping");
   if (scene.obstacles.empty()) return;
   not_modelled.push_back("hard obstacle contact: nodes are pushed out through a sparse signed-distance field (voxel " +
                          note_number(options.voxel_size) + " m, trilinear) and rest about the margin (" +

@@ -12,29 +12,27 @@ namespace tecido::suites::obstacles {
 
 namespace {
 
-/// Mean z - top of the particles strictly above the top face's square (z >= top - 1 mm).
-double rest_height(const std::vector<Vec3>& x, const OrientedBox& b) {
-  const double top = b.center.z() + b.half.z();
+/// Mean height above the top face of the particles over it, within 1 mm below it or higher.
+double rest_height(const std::vector<Vec3>& x, const OrientedBox& b, const Vec3& up) {
   double sum = 0.0;
   int count = 0;
-  for (const Vec3& p : x)
-    if (std::abs(p.x() - b.center.x()) < b.half.x() && std::abs(p.y() - b.center.y()) < b.half.y() &&
-        p.z() >= top - 1e-3) {
-      sum += p.z() - top;
-      ++count;
-    }
+  for (const Vec3& p : x) {
+    bool over = false;
+    const double h = height_above_top(b, up, p, &over);
+    if (over && h >= -1e-3) sum += h, ++count;
+  }
   return count ? sum / count : std::numeric_limits<double>::quiet_NaN();
 }
 
 }  // namespace
 
-io::Json block_case(const Settings& s, int n, bool edge_contacts) {
-  const Scene sc = block_scene(s, n, edge_contacts);
+io::Json block_case(const Settings& s, const std::string& data_dir, int n, bool edge_contacts) {
+  const Scene sc = block_scene(s, data_dir, n, edge_contacts);
   const OrientedBox box = block_of(sc);
   const auto springs = stiff_springs(sc);
   Simulation sim(sc);
   sim.set_log_contacts(true);
-  const long long steps = std::llround(s.block_seconds / s.block_dt);
+  const long long steps = run_steps(s, sc);
   io::Json frames = io::Json::array();
   int max_through = 0, next_frame = 1;
   long long inside = 0;
@@ -61,7 +59,7 @@ io::Json block_case(const Settings& s, int n, bool edge_contacts) {
           {"steps_inside", inside},
           {"max_particle_depth", num(max_particle_depth)},
           {"t_onset", num(t_onset)},
-          {"rest_height", num(rest_height(sim.particles().x, box))},
+          {"rest_height", num(rest_height(sim.particles().x, box, up_of(sc)))},
           {"springs", springs.size()},
           {"unstable", sim.instability() ? io::Json(sim.instability()->step) : io::Json(nullptr)}};
 }

@@ -108,8 +108,9 @@ std::string bullet_markdown(const Settings& s, const Results& r) {
     for (const auto& n : d->at("not_modelled"))
       if (std::find(notes.begin(), notes.end(), n.get<std::string>()) == notes.end()) notes.push_back(n.get<std::string>());
   }
-  md += "\nContact onset: the first step end at which a node's velocity leaves free fall (the cloth falls flat until "
-        "something touches it); expected: the analytic fall to the surface. Core's deepest node is measured by the "
+  md += "\nContact onset: core's first bisected contact; Bullet's first step end at which a node's velocity leaves "
+        "free fall (its cloth falls flat and undragged until something touches it); expected: the analytic fall to the "
+        "surface without drag. Core's deepest node is measured by the "
         "suite's own inside test; Bullet's nodes are pushed out softly and may sink, which the table measures.\n";
   md += "\nA second opinion on the contact time: FCL's continuous vertex-face test of every cloth vertex's path "
         "over each step of the free fall against the block as 12 triangles (FCL takes the path as straight; core "

@@ -63,25 +63,28 @@ void observe(Track& tr, const Watch& w, const std::vector<Vec3>& x, const std::v
   if (k % w.every == 0) tr.frames.push_back({num(t), through, num(deepest)});
 }
 
-double top_rest_height(const Scene& sc, const std::vector<Vec3>& x, bool block, int n) {
+/// Sphere: the cloth's centre node's height above the surface. Block: the mean height above the
+/// top face of the nodes over it (inside the block too: Bullet's may sink).
+double top_rest_height(const Scene& sc, const std::vector<Vec3>& x, bool block) {
   const Obstacle& o = sc.obstacles.front();
   if (!block) {
-    const int c = sc.cloth_first_particle + (n / 2) * n + n / 2;
-    return -inside_depth(o, 0.0, x[c]);
+    const int n = sc.cloth->rows, m = sc.cloth->cols;
+    return -inside_depth(o, 0.0, x[sc.cloth_first_particle + (n / 2) * m + m / 2]);
   }
+  const OrientedBox b = block_of(sc);
+  const Vec3 up = up_of(sc);
   double sum = 0.0;
   int count = 0;
-  for (const Vec3& p : x)
-    if (std::abs(p.x() - o.center.x()) < o.half_extents.x() && std::abs(p.y() - o.center.y()) < o.half_extents.y() &&
-        p.z() > o.center.z()) {
-      sum += p.z() - (o.center.z() + o.half_extents.z());
-      ++count;
-    }
+  for (const Vec3& p : x) {
+    bool over = false;
+    const double h = height_above_top(b, up, p, &over);
+    if (over && h > -2.0 * b.half.maxCoeff()) sum += h, ++count;
+  }
   return count ? sum / count : kNaN;
 }
 
-io::Json run_both(const Settings& s, const Scene& sc, int n, bool block) {
-  const long long steps = std::llround(s.block_seconds / s.block_dt);
+io::Json run_both(const Settings& s, const Scene& sc, bool block) {
+  const long long steps = run_steps(s, sc);
   const Watch w{&sc, block ? stiff_springs(sc) : std::vector<std::array<int, 2>>{}, s.through_depth,
                 std::max(1LL, steps / s.block_frames)};
   Track core, bt;
@@ -107,9 +110,12 @@ io::Json run_both(const Settings& s, const Scene& sc, int n, bool block) {
     }
   }
   const double t_contact_core = sim.contact_log().empty() ? kNaN : sim.contact_log().front().time;
-  core.rest_height = top_rest_height(sc, sim.particles().x, block, n);
-  bt.rest_height = top_rest_height(sc, bullet.positions(), block, n);
-  return {{"t_onset_expected", num(fall_time(s.cloth_height, s.g))},
+  core.t_onset = t_contact_core;  // core's own first contact (its cloth leaves free fall at once under air drag)
+  core.rest_height = top_rest_height(sc, sim.particles().x, block);
+  bt.rest_height = top_rest_height(sc, bullet.positions(), block);
+  const double g_norm = sc.forces.gravity.value_or(Vec3::Zero()).norm();
+  return {{"t_onset_expected", num(fall_time(initial_gap(sc), g_norm))},
+          {"dt", num(sc.dt)},
           {"t_contact_core", num(t_contact_core)},
           {"contact_distance", num(opt.collision_margin)},
           {"core", core.json()},
@@ -119,8 +125,12 @@ io::Json run_both(const Settings& s, const Scene& sc, int n, bool block) {
 
 }  // namespace
 
-io::Json bullet_sphere_case(const Settings& s) { return run_both(s, sphere_scene(s, s.block_sides[0]), s.block_sides[0], false); }
+io::Json bullet_sphere_case(const Settings& s, const std::string& data_dir) {
+  return run_both(s, sphere_scene(s, data_dir), false);
+}
 
-io::Json bullet_block_case(const Settings& s, int n) { return run_both(s, block_scene(s, n, false), n, true); }
+io::Json bullet_block_case(const Settings& s, const std::string& data_dir, int n) {
+  return run_both(s, block_scene(s, data_dir, n, false), true);
+}
 
 }  // namespace tecido::suites::obstacles

@@ -7,19 +7,22 @@
 #include "comparisons/io/json_reader.h"
 #include "comparisons/suites/obstacles/settings.h"
 
+#include <string>
+
 namespace tecido::suites::obstacles {
 
-/// The 11 x 11 cloth on the sphere (block_scene.h sphere_scene), core and Bullet:
+/// The cloth on the sphere (block_scene.h sphere_scene), core and Bullet:
 /// {"t_onset_expected" (analytic fall to the surface), "t_contact_core" (core's first bisected
-/// contact), "contact_distance" (Bullet's margin), "core": {...}, "bullet": {...},
-/// "not_modelled": [...]}; each engine's object holds "t_onset" (first step end at which a node's
-/// velocity leaves free fall by more than 1e-6 m/s: the cloth falls flat until it touches),
-/// "max_penetration", "rest_height" (the centre node above the top), "max_through" (0 here),
+/// contact), "contact_distance" (Bullet's margin), "dt", "core": {...}, "bullet": {...},
+/// "not_modelled": [...]}; each engine's object holds "t_onset" (Bullet: the first step end at which
+/// a node's velocity leaves free fall by more than 1e-6 m/s, as its cloth falls flat and undragged
+/// until it touches; core: its first bisected contact),
+/// "max_penetration", "rest_height" (the centre node above the sphere), "max_through" (0 here),
 /// "frames" ([[t, springs through, deepest], ...], empty here), "unstable" (step or null).
-io::Json bullet_sphere_case(const Settings& s);
+io::Json bullet_sphere_case(const Settings& s, const std::string& data_dir);
 
 /// The n x n cloth on the block, edges off, core and Bullet, the same fields; "rest_height" is
 /// the mean height above the top of the nodes over the top face; frames as block_case.h.
-io::Json bullet_block_case(const Settings& s, int n);
+io::Json bullet_block_case(const Settings& s, const std::string& data_dir, int n);
 
 }  // namespace tecido::suites::obstacles

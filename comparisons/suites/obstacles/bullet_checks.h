@@ -8,8 +8,8 @@
 
 namespace tecido::suites::obstacles {
 
-/// Per Bullet scene (bullet/sphere, bullet/block/<n>): onset_error, |Bullet's contact onset (the
-/// first step end at which a node leaves free fall) - the analytic fall to the surface|.
+/// Per Bullet scene (bullet/sphere, bullet/block/<n>): onset_error_steps, |Bullet's contact onset
+/// (the first step end at which a node leaves free fall) - the analytic fall to the surface| / dt.
 /// Bullet's penetration, rest height and springs through the block are reported beside core's,
 /// not checked: Bullet keeps a margin and pushes nodes out softly rather than holding a hard
 /// constraint, so how deep its cloth sinks is a finding about Bullet, not an agreement to test.

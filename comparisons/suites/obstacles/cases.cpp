@@ -21,7 +21,7 @@ std::string bullet_block_name(int n) { return fmt::format("bullet/block/{}", n);
 
 std::string fcl_block_name(int n) { return fmt::format("fcl/block/{}", n); }
 
-std::vector<Case> cases(const Settings& s) {
+std::vector<Case> cases(const Settings& s, const std::string& data_dir) {
   std::vector<Case> out;
   out.push_back({"sphere-drop", [s] { return sphere_drop_case(s); }});
   out.push_back({"slide", [s] { return slide_case(s); }});
@@ -31,11 +31,13 @@ std::vector<Case> cases(const Settings& s) {
     for (double h : s.fast_steps)
       out.push_back({"fast/" + scene + "/h=" + step_label(h), [s, scene, h] { return fast_case(s, scene, h); }});
   for (int n : s.block_sides)
-    for (bool on : {false, true}) out.push_back({block_name(n, on), [s, n, on] { return block_case(s, n, on); }});
+    for (bool on : {false, true}) out.push_back({block_name(n, on), [s, data_dir, n, on] { return block_case(s, data_dir, n, on); }});
 #ifdef TECIDO_HAVE_REFERENCE
-  out.push_back({"bullet/sphere", [s] { return bullet_sphere_case(s); }});
-  for (int n : s.block_sides) out.push_back({bullet_block_name(n), [s, n] { return bullet_block_case(s, n); }});
-  for (int n : s.block_sides) out.push_back({fcl_block_name(n), [s, n] { return fcl_block_case(s, n); }});
+  out.push_back({"bullet/sphere", [s, data_dir] { return bullet_sphere_case(s, data_dir); }});
+  for (int n : s.block_sides)
+    out.push_back({bullet_block_name(n), [s, data_dir, n] { return bullet_block_case(s, data_dir, n); }});
+  for (int n : s.block_sides)
+    out.push_back({fcl_block_name(n), [s, data_dir, n] { return fcl_block_case(s, data_dir, n); }});
 #endif
   return out;
 }

@@ -25,9 +25,9 @@ std::string bullet_block_name(int n);
 /// "fcl/block/<n>": FCL's contact time on the block scene (reference build only, reported).
 std::string fcl_block_name(int n);
 
-/// Every case, in a fixed order: analytic (sphere drop, slide, rest on sphere and box), fast
+/// Every case, in a fixed order (the block and sphere scenes read from data_dir/scenes): analytic (sphere drop, slide, rest on sphere and box), fast
 /// (scene-major, then step), block (side-major, edges off then on), then, in the reference build,
 /// the Bullet runs (sphere, then each block side) and FCL's contact times (each block side).
-std::vector<Case> cases(const Settings& s);
+std::vector<Case> cases(const Settings& s, const std::string& data_dir);
 
 }  // namespace tecido::suites::obstacles

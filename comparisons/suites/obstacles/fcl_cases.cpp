@@ -32,8 +32,8 @@ double earliest_toi(const std::vector<Vec3>& x0, const std::vector<Vec3>& x1, co
 
 }  // namespace
 
-io::Json fcl_block_case(const Settings& s, int n) {
-  const Scene with_block = block_scene(s, n, false);
+io::Json fcl_block_case(const Settings& s, const std::string& data_dir, int n) {
+  const Scene with_block = block_scene(s, data_dir, n, false);
   Scene free_fall = with_block;
   free_fall.obstacles.clear();
   const OrientedBox box = block_of(with_block);
@@ -41,20 +41,21 @@ io::Json fcl_block_case(const Settings& s, int n) {
   for (Vec3& c : corners) c = box.center + box.rotation * c;
   Simulation fall(free_fall);
   double t_fcl = std::numeric_limits<double>::quiet_NaN();
-  const long long steps = std::llround(s.block_seconds / s.block_dt);
+  const long long steps = run_steps(s, with_block);
   for (long long k = 0; k < steps && std::isnan(t_fcl); ++k) {
     const std::vector<Vec3> x0 = fall.particles().x;
     const double t0 = fall.time();
     if (!fall.step()) break;
     const double toi = earliest_toi(x0, fall.particles().x, corners);
-    if (!std::isnan(toi)) t_fcl = t0 + toi * s.block_dt;
+    if (!std::isnan(toi)) t_fcl = t0 + toi * with_block.dt;
   }
   Simulation core(with_block);
   core.set_log_contacts(true);
   for (long long k = 0; k < steps && core.contact_log().empty() && core.step(); ++k) {
   }
   const double t_core = core.contact_log().empty() ? std::numeric_limits<double>::quiet_NaN() : core.contact_log().front().time;
-  return {{"t_fcl", num(t_fcl)}, {"t_core", num(t_core)}, {"t_exact", num(fall_time(s.cloth_height, s.g))}, {"dt", num(s.block_dt)}};
+  return {{"t_fcl", num(t_fcl)}, {"t_core", num(t_core)}, {"t_exact", num(fall_time(initial_gap(with_block), with_block.forces.gravity.value_or(Vec3::Zero()).norm()))},
+          {"dt", num(with_block.dt)}};
 }
 
 }  // namespace tecido::suites::obstacles

@@ -33,13 +33,15 @@ std::string method_markdown(const Settings& s) {
       "(`comparisons/suites/obstacles/settings.h`): g = {} m/s^2; drop {} m onto a sphere of radius {} m, k = {}, "
       "midpoint, dt = {} s; slide on a face tilted {:.4g} rad, mu = {}, dt = {} s for {} s; rest {} steps of {} s; "
       "fast cases {} steps each at dt in {{{}}} s, particle at {} m/s against a box {} m thick, bodies moving at {} m/s, "
-      "a box spinning at {} rad/s; block: a {} m cloth ({} kg, ks = {} N/m, damping {} N s/m) {} m above a cube of "
-      "half extent {} m (friction {}), dt = {} s for {} s, {} frames; a spring is through the block when it goes "
-      "deeper than {:g} m inside every face.\n\n",
+      "a box spinning at {} rad/s; the block scenes data/scenes/{} and {} and the cloth on a sphere data/scenes/{} (their "
+      "choices are documented in those files), run {}, {} frames counted; a spring is through the block when it goes "
+      "deeper than {:g} m inside every face; Bullet's soft body with a collision margin of {} m and a distance-field "
+      "voxel of {} m.\n\n",
       s.g, s.drop_height, s.sphere_radius, s.drop_elasticity, s.drop_dt, s.slide_angle, s.slide_friction, s.slide_dt,
       s.slide_seconds, s.rest_steps, s.rest_dt, s.fast_run_steps, fmt::join(s.fast_steps, ", "), s.fast_speed,
-      2 * s.thin_half_thickness, s.moving_speed, s.spin_rate, s.cloth_side, s.cloth_mass, s.cloth_ks, s.cloth_damping,
-      s.cloth_height, s.block_half, s.block_friction, s.block_dt, s.block_seconds, s.block_frames, s.through_depth);
+      2 * s.thin_half_thickness, s.moving_speed, s.spin_rate, s.block_files[0], s.block_files[1], s.sphere_file,
+      s.block_seconds > 0.0 ? fmt::format("for {} s", s.block_seconds) : std::string("for each scene's own steps"),
+      s.block_frames, s.through_depth, s.bullet_margin, s.bullet_voxel);
 }
 
 std::string analytic_markdown(const Settings& s, const Results& r) {

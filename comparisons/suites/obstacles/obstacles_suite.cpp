@@ -46,7 +46,7 @@ SuiteResult assemble(const Plan& plan, const std::vector<io::Json>& results) {
 
 Sweep obstacles_sweep(const SuiteContext& ctx) {
   const obstacles::Settings s = obstacles::settings(ctx.quick);
-  auto plan = std::make_shared<const Plan>(Plan{s, obstacles::cases(s), obstacles::declare_checks(s, *ctx.tolerances, kReference)});
+  auto plan = std::make_shared<const Plan>(Plan{s, obstacles::cases(s, ctx.data_dir), obstacles::declare_checks(s, *ctx.tolerances, kReference)});
   Sweep sw;
   sw.cases = plan->cases.size();
   sw.run_case = [plan](std::size_t k) { return plan->cases.at(k).run(); };

@@ -43,22 +43,33 @@ TEST(ObstaclesCases, AnUnknownSceneOrObstacleThrows) {
   EXPECT_THROW(rest_case(settings(true), "cone"), std::invalid_argument);
 }
 
-TEST(ObstaclesScenes, TheBlockSceneHasTheSeedsParticleCountsAndTheBlockUnderTheCloth) {
+TEST(ObstaclesScenes, TheBlockScenesAreTheSeedsCountsOverTheBlock) {
   const Settings s = settings(true);
+  const std::string data = std::string(TECIDO_SOURCE_DIR) + "/data";
   for (int n : s.block_sides) {
-    const Scene sc = block_scene(s, n, true);
+    const Scene sc = block_scene(s, data, n, true);
     EXPECT_EQ(sc.particles.size(), static_cast<std::size_t>(n * n));
     EXPECT_TRUE(sc.edge_contacts);
+    EXPECT_FALSE(block_scene(s, data, n, false).edge_contacts);
     ASSERT_EQ(sc.obstacles.size(), 1u);
-    const OrientedBox b = block_of(sc);
-    EXPECT_DOUBLE_EQ(b.center.z() + b.half.z(), 0.0);  // the top at z = 0
-    for (const Vec3& x : sc.particles.x) EXPECT_DOUBLE_EQ(x.z(), s.cloth_height);
-    // Structural springs only: horizontal and vertical n (n - 1) each, diagonals (n - 1)^2 each.
-    EXPECT_EQ(stiff_springs(sc).size(), static_cast<std::size_t>(2 * n * (n - 1) + 2 * (n - 1) * (n - 1)));
+    // The files: gravity -y, the block's top at y = 0.75, the cloth flat at y = 1.0.
+    EXPECT_TRUE(up_of(sc).isApprox(Vec3::UnitY()));
+    EXPECT_NEAR(initial_gap(sc), 0.25, 1e-12);
+    bool over = false;
+    EXPECT_NEAR(height_above_top(block_of(sc), up_of(sc), Vec3(0.1, 0.8, -0.2), &over), 0.05, 1e-12);
+    EXPECT_TRUE(over);
+    height_above_top(block_of(sc), up_of(sc), Vec3(0.3, 0.8, 0), &over);
+    EXPECT_FALSE(over);
+    // Type B (one edge apart) and type A (two apart) springs, every one stiff.
+    const std::size_t b = 2 * n * (n - 1) + 2 * (n - 1) * (n - 1), a = 2 * n * (n - 2) + 2 * (n - 2) * (n - 2);
+    EXPECT_EQ(stiff_springs(sc).size(), a + b);
   }
-  const Scene sphere = sphere_scene(s, s.block_sides[0]);
+  EXPECT_THROW(block_scene(s, data, 7, false), std::invalid_argument);
+  const Scene sphere = sphere_scene(s, data);
   EXPECT_EQ(sphere.obstacles.front().kind, ObstacleKind::Sphere);
-  EXPECT_DOUBLE_EQ(sphere.obstacles.front().center.z() + sphere.obstacles.front().radius, 0.0);
+  EXPECT_NEAR(initial_gap(sphere), 0.2, 1e-12);  // the cloth at y = 0.8 over a top at 0.3 + 0.3
+  EXPECT_EQ(run_steps(s, sphere), std::llround(0.6 / sphere.dt));
+  EXPECT_EQ(run_steps(settings(false), sphere), sphere.steps);
 }
 
 }  // namespace tecido::suites::obstacles
