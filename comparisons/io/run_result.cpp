@@ -34,6 +34,20 @@ Json run_result_json(const Simulation& sim) {
                         {"resting_corrections", o.resting_corrections},
                         {"guard_corrections", o.guard_corrections}};
   }
+  if (sim.scene().edge_contacts && !sim.scene().obstacles.empty()) {
+    const SpringBoxCounters& b = sim.spring_box_contacts().counters();
+    const EdgeCounters& e = sim.edge_contacts().counters();
+    out["edge_contacts"] = {{"spring_box", {{"contacts", b.contacts},
+                                            {"separating", b.separating},
+                                            {"moved_out", b.moved_out},
+                                            {"unresolved", b.unresolved},
+                                            {"resting_now", sim.spring_box_contacts().resting_count()}}},
+                            {"spring_edge", {{"contacts", e.contacts},
+                                             {"separating", e.separating},
+                                             {"resting_corrections", e.resting_corrections},
+                                             {"moved_through", e.moved_through},
+                                             {"resting_now", sim.edge_contacts().resting_count()}}}};
+  }
   out["particles"] = std::move(particles);
   return out;
 }

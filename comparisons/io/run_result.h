@@ -2,6 +2,11 @@
 /// The JSON result of a run (docs/design.md section 3, `tecido run --json`):
 /// {"status":"ok"|"unstable","unstable_at_step":N|null,"time":T,"steps":N,
 ///  "particles":[{"x":[..],"v":[..]}],"integrator","dt","instability":{...}|null,"contacts":{...}}
+/// With obstacles, "obstacles":{contacts, separating, resting_now, resting_corrections,
+/// guard_corrections}; with edge_contacts as well, "edge_contacts":{"spring_box":{contacts,
+/// separating, moved_out, unresolved, resting_now}, "spring_edge":{contacts, separating,
+/// resting_corrections, moved_through, resting_now}} (core/dynamics/spring_box_contacts.h,
+/// edge_contacts.h).
 /// Numbers are printed with 17 significant digits, so the file round-trips bit for bit.
 #include "comparisons/io/json_reader.h"
 #include "core/dynamics/simulation.h"

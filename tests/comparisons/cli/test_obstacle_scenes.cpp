@@ -13,6 +13,7 @@
 #include "core/geometry/segment_sphere.h"
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include <cmath>
 #include <sstream>
@@ -138,6 +139,27 @@ TEST(ObstacleScenes, MovingSpherePushesTheCurtainAndIsDrawnWhereItIs) {
     // The drawn sphere is symmetric about its centre: its vertices' mean z is the centre's.
     EXPECT_NEAR(zsum / n, -0.6 + 0.5 * step * s.dt, 1e-6) << name;
   }
+  std::filesystem::remove_all(dir);
+}
+
+TEST(ObstacleScenes, RunResultCountsEdgeContactsWhenOn) {
+  // The 121-particle block with edge_contacts on, 0.5 s (it lands at about 0.23 s): the result
+  // carries the spring-box counters, with contacts and nothing left unresolved.
+  const auto dir = testing::temp_dir("edgecounters");
+  std::string text = testing::slurp(scene_path("seed_fig10_block.json"));
+  const auto pos = text.find("\"edge_contacts\": false");
+  ASSERT_NE(pos, std::string::npos);
+  text.replace(pos, 22, "\"edge_contacts\": true");
+  testing::write_text(dir / "block.json", text);
+  const auto r = testing::run_cli("run '" + (dir / "block.json").string() + "' --json --steps 250");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  ASSERT_TRUE(j.contains("edge_contacts")) << r.out.substr(0, 200);
+  EXPECT_GT(j["edge_contacts"]["spring_box"]["contacts"].get<long long>(), 0);
+  EXPECT_EQ(j["edge_contacts"]["spring_box"]["unresolved"].get<long long>(), 0);
+  const auto off = testing::run_cli("run '" + scene_path("seed_fig10_block.json") + "' --json --steps 10");
+  ASSERT_EQ(off.code, 0) << off.err;
+  EXPECT_FALSE(nlohmann::json::parse(off.out).contains("edge_contacts"));
   std::filesystem::remove_all(dir);
 }
 
