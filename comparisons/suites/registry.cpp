@@ -1,6 +1,7 @@
 #include "comparisons/suites/bench/bench_suite.h"
 #include "comparisons/suites/drift/drift_suite.h"
 #include "comparisons/suites/ccd/ccd_suite.h"
+#include "comparisons/suites/obstacles/obstacles_suite.h"
 #include "comparisons/suites/order/order_suite.h"
 #include "comparisons/suites/plane/plane_suite.h"
 #include "comparisons/suites/selfcollision/selfcollision_suite.h"
@@ -20,6 +21,7 @@ const std::vector<SuiteEntry>& suite_registry() {
       {"tritri", "triangle-triangle engines vs the exact referee by category, ns per pair", &run_tritri_suite, &tritri_sweep},
       {"ccd", "continuous collision engines vs the exact referee by family (handcrafted kinds, random): misses, false hits, toi error, ns per query", &run_ccd_suite, &ccd_sweep},
       {"selfcollision", "self-collision pair sets per engine vs exact on recorded frames: precision, recall, time", &run_selfcollision_suite, &selfcollision_sweep},
+      {"obstacles", "particles and cloth against spheres and boxes, static and moving: closed forms, nothing ends inside, the seed's block artefact per frame, Bullet on the same scenes", &run_obstacles_suite, &obstacles_sweep},
       {"bench", "runs tecido-bench: time per pair/frame/step and ratios against the reference engines", &run_bench_suite},
       {"stability", "largest stable step per integrator vs theory; offsets, mass ratios, tiny springs, resting, tunnelling", &run_stability_suite, &stability_sweep},
       {"tradeoff", "cost against accuracy of every engine and step on hanging cloths; Pareto front", &run_tradeoff_suite, &tradeoff_sweep},

@@ -1,0 +1,134 @@
+// The block and Bullet parts of the `obstacles` report (declared in obstacles_report.h).
+#include "comparisons/suites/obstacles/obstacles_report.h"
+
+#include "comparisons/suites/sweep.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+
+namespace tecido::suites::obstacles {
+
+namespace {
+
+const io::Json* ok(const Results& r, const std::string& name) {
+  if (!r.contains(name)) return nullptr;
+  const io::Json& j = r.at(name);
+  return case_error(j) ? nullptr : &j;
+}
+
+std::string cell(const io::Json* run, std::size_t f) {
+  if (!run || f >= run->at("frames").size()) return "-";
+  const io::Json& fr = run->at("frames")[f];
+  return fmt::format("{} ({:.2g} mm)", fr[1].dump(), 1e3 * get_num(fr[2]));
+}
+
+std::string direction_prose(const Settings& s, const Results& r) {
+  const io::Json* coarse = ok(r, block_name(s.block_sides[0], false));
+  const io::Json* fine = ok(r, block_name(s.block_sides[1], false));
+  if (!coarse || !fine) return "The seed's direction cannot be stated: a run is missing.\n";
+  const Direction d = seed_direction(coarse->at("frames"), fine->at("frames"));
+  const int nc = s.block_sides[0] * s.block_sides[0], nf = s.block_sides[1] * s.block_sides[1];
+  const std::string verdict = d.fewer > d.more ? "holds" : (d.fewer == d.more ? "is undecided" : "does not hold");
+  auto share = [](const io::Json& r) { return r.at("max_through").get<double>() / r.at("springs").get<double>(); };
+  const double dc = get_num(coarse->at("max_spring_depth")), df = get_num(fine->at("max_spring_depth"));
+  return fmt::format(
+      "Edges off (the seed's engine): by the count, the seed's observation (less cutting with more particles) {}: the "
+      "{}-particle cloth has fewer springs through the block than the {}-particle one at {} of {} frames and more at "
+      "{} (most at once {} of {} springs against {} of {}). As a share of the springs, {:.1f}% against {:.1f}% "
+      "({}); the deepest spring goes {:.3g} mm in against {:.3g} mm ({}). With edge contacts on the table shows "
+      "what is left.\n",
+      verdict, nf, nc, d.fewer, d.frames, d.more, fine->at("max_through").dump(), fine->at("springs").dump(),
+      coarse->at("max_through").dump(), coarse->at("springs").dump(), 100 * share(*fine), 100 * share(*coarse),
+      share(*fine) < share(*coarse) ? "the finer cloth less" : "the finer cloth not less", 1e3 * df, 1e3 * dc,
+      df < dc ? "shallower with more particles, as the seed's figures show" : "not shallower with more particles");
+}
+
+}  // namespace
+
+Direction seed_direction(const io::Json& coarse_frames, const io::Json& fine_frames) {
+  Direction d;
+  const std::size_t n = std::min(coarse_frames.size(), fine_frames.size());
+  for (std::size_t f = 0; f < n; ++f) {
+    const long long c = coarse_frames[f][1].get<long long>(), m = fine_frames[f][1].get<long long>();
+    if (c == 0 && m == 0) continue;  // nothing to compare (before landing)
+    ++d.frames;
+    d.fewer += m < c ? 1 : 0;
+    d.more += m > c ? 1 : 0;
+  }
+  return d;
+}
+
+std::string block_markdown(const Settings& s, const Results& r) {
+  std::vector<const io::Json*> runs;
+  std::string head = "| t [s] |", rule = "|---|";
+  for (int n : s.block_sides)
+    for (bool on : {false, true}) {
+      runs.push_back(ok(r, block_name(n, on)));
+      head += fmt::format(" {} particles, edges {} |", n * n, on ? "on" : "off");
+      rule += "---|";
+    }
+  std::string md = "### The seed's block (figs 10-13): springs through the block's interior per frame\n\n"
+                   "Each cell: springs through the interior (deepest of them). " + head + "\n" + rule + "\n";
+  std::size_t frames = 0;
+  for (const io::Json* run : runs) frames = std::max(frames, run ? run->at("frames").size() : 0);
+  for (std::size_t f = 0; f < frames; ++f) {
+    double t = 0.0;
+    for (const io::Json* run : runs)
+      if (run && f < run->at("frames").size()) t = get_num(run->at("frames")[f][0]);
+    md += fmt::format("| {:.3g} |", t);
+    for (const io::Json* run : runs) md += " " + cell(run, f) + " |";
+    md += "\n";
+  }
+  md += "| most at any step |";
+  for (const io::Json* run : runs) md += run ? fmt::format(" {} |", run->at("max_through").dump()) : " - |";
+  md += "\n| particle step ends inside |";
+  for (const io::Json* run : runs) md += run ? fmt::format(" {} |", run->at("steps_inside").dump()) : " - |";
+  return md + "\n\n" + direction_prose(s, r) + "\n";
+}
+
+std::string bullet_markdown(const Settings& s, const Results& r) {
+  std::vector<std::string> names = {"bullet/sphere"};
+  for (int n : s.block_sides) names.push_back(bullet_block_name(n));
+  std::string md = "### Core beside Bullet's classic soft body\n\n| scene | engine | contact onset [s] | expected [s] | rest "
+                   "height [mm] | deepest node inside [mm] | most springs through |\n|---|---|---|---|---|---|---|\n";
+  std::vector<std::string> notes;
+  for (const std::string& name : names) {
+    const io::Json* d = ok(r, name);
+    if (!d) {
+      md += fmt::format("| {} | | {} | | | | |\n", name, r.contains(name) ? *case_error(r.at(name)) : "not run");
+      continue;
+    }
+    for (const char* engine : {"core", "bullet"}) {
+      const io::Json& e = d->at(engine);
+      md += fmt::format("| {} | {} | {:.6g} | {:.6g} | {:.4g} | {:.4g} | {} |\n", name, engine, get_num(e.at("t_onset")),
+                        get_num(d->at("t_onset_expected")), 1e3 * get_num(e.at("rest_height")),
+                        1e3 * get_num(e.at("max_penetration")), e.at("max_through").dump());
+    }
+    for (const auto& n : d->at("not_modelled"))
+      if (std::find(notes.begin(), notes.end(), n.get<std::string>()) == notes.end()) notes.push_back(n.get<std::string>());
+  }
+  md += "\nContact onset: core's first bisected contact; Bullet's first step end at which a node's velocity leaves "
+        "free fall (its cloth falls flat and undragged until something touches it); expected: the analytic fall to the "
+        "surface without drag. Core's deepest node is measured by the "
+        "suite's own inside test; Bullet's nodes are pushed out softly and may sink, which the table measures.\n";
+  md += "\nA second opinion on the contact time: FCL's continuous vertex-face test of every cloth vertex's path "
+        "over each step of the free fall against the block as 12 triangles (FCL takes the path as straight; core "
+        "bisects along its integrator's sub-steps).\n\n| scene | FCL [s] | core [s] | exact [s] | FCL - core [steps] "
+        "|\n|---|---|---|---|---|\n";
+  for (int n : s.block_sides) {
+    const io::Json* f = ok(r, fcl_block_name(n));
+    if (!f) {
+      md += fmt::format("| {} | {} | | | |\n", fcl_block_name(n), r.contains(fcl_block_name(n)) ? "failed" : "not run");
+      continue;
+    }
+    const double t_fcl = get_num(f->at("t_fcl")), t_core = get_num(f->at("t_core"));
+    md += fmt::format("| {} | {:.9g} | {:.9g} | {:.9g} | {:.3g} |\n", fcl_block_name(n), t_fcl, t_core,
+                      get_num(f->at("t_exact")), (t_fcl - t_core) / get_num(f->at("dt")));
+  }
+  md += "\nNot modelled by Bullet's classic soft body:\n\n";
+  for (const std::string& n : notes) md += "- " + n + "\n";
+  return md + "\n";
+}
+
+}  // namespace tecido::suites::obstacles

@@ -1,0 +1,35 @@
+#pragma once
+/// The `obstacles` suite's report: tables and prose as short functions of the run's values (no
+/// measured number is a literal; every conclusion is derived from the table it summarises).
+#include "comparisons/io/json_reader.h"
+#include "comparisons/suites/obstacles/cases.h"
+#include "comparisons/suites/obstacles/settings.h"
+
+#include <string>
+#include <vector>
+
+namespace tecido::suites::obstacles {
+
+/// The case results by case name (a case that threw holds {"error": ...}).
+using Results = io::Json;
+
+/// What runs, from the settings.
+std::string method_markdown(const Settings& s);
+/// The analytic cases against their closed forms.
+std::string analytic_markdown(const Settings& s, const Results& r);
+/// Fast particles and huge steps: step ends inside, tunnelling, guard corrections.
+std::string fast_markdown(const Settings& s, const Results& r);
+/// The seed's artefact table: springs through the block's interior per frame, both resolutions,
+/// edge contacts off and on, with the seed's direction stated as found.
+std::string block_markdown(const Settings& s, const Results& r);
+/// Core beside Bullet's classic soft body (reference build), with what Bullet does not model.
+std::string bullet_markdown(const Settings& s, const Results& r);
+
+/// For the edges-off runs: frames where the 484-particle cloth has fewer springs through the
+/// block than the 121-particle one, frames where it has more, frames compared (both present).
+struct Direction {
+  int fewer = 0, more = 0, frames = 0;
+};
+Direction seed_direction(const io::Json& coarse_frames, const io::Json& fine_frames);
+
+}  // namespace tecido::suites::obstacles
