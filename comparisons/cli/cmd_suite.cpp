@@ -6,7 +6,9 @@
 // `all --shard` shards the sweep suites and skips the others (saying so on stderr); naming a suite
 // that cannot be sharded is a usage error.
 #include "comparisons/cli/commands.h"
+#include "comparisons/cli/outside_options.h"
 #include "comparisons/cli/shard_option.h"
+#include "comparisons/engines/run_engines.h"
 #include "comparisons/io/atomic_file.h"
 #include "comparisons/io/gnuplot.h"
 #include "comparisons/io/input_error.h"
@@ -37,6 +39,8 @@ Command add_suite(CLI::App& app) {
     bool quick = false;
     std::uint64_t seed = 20141;
     int threads = 0;
+    std::string engines;
+    outside::OutsideOptions outside;
   };
   auto o = std::make_shared<Opts>();
   std::string list;
@@ -52,6 +56,10 @@ Command add_suite(CLI::App& app) {
   sub->add_option("--shard", o->shard,
                   "Only the cases whose index % n == i of the sweep suites (tritri, stability, tradeoff), e.g. 0/8: "
                   "writes DIR/shard.json; join the shards with `tecido merge`");
+  sub->add_option("--engines", o->engines,
+                  "Comma-separated engines the suites run (built-in or outside, by name; default: every one). A "
+                  "suite runs those it knows; its referee always runs");
+  add_outside_options(sub, o->outside);
   return [o]() {
     const bool sharded = !o->shard.empty();
     int shard_index = 0, shard_count = 1;
@@ -95,6 +103,15 @@ Command add_suite(CLI::App& app) {
     ctx.tolerances = &tol;
     ctx.gnuplot = io::gnuplot_available();
     ctx.progress = true;
+    if (sharded && o->outside.any())
+      throw io::UsageError("--shard: outside engines (--plugin, --engine-cmd) run unsharded only");
+    const auto outside = load_outside_engines(o->outside);
+    ctx.outside = outside;
+    if (!o->engines.empty()) {
+      std::vector<std::string> known = builtin_engine_names();
+      for (const auto& e : outside->all()) known.push_back(e->name());
+      ctx.engines = parse_engine_list(o->engines, known, "suite");
+    }
     if (sharded) {
       if (!skipped.empty())
         std::cerr << "suite: --shard: skipping " << skipped << " (not split into cases; run them unsharded)\n";
