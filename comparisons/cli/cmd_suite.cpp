@@ -141,7 +141,13 @@ Command add_suite(CLI::App& app) {
     for (const auto* s : chosen) {
       std::cerr << "suite " << s->name << " ..." << std::flush;
       const auto t0 = std::chrono::steady_clock::now();
-      suites::SuiteResult r = s->run(ctx);
+      suites::SuiteResult r;
+      try {
+        r = s->run(ctx);
+      } catch (...) {
+        std::cerr << "\n";  // end the progress line: the error gets a line of its own
+        throw;
+      }
       r.name = s->name;
       r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
       int failed = 0;

@@ -113,6 +113,13 @@ long long JsonLinesProcess::round_trips() const {
 std::string JsonLinesProcess::round_trip(const std::string& request) {
   std::lock_guard<std::mutex> lock(mutex_);
   if (!failure_.empty()) throw ProcessFailure(failure_, tail_line());
+  // Output nobody asked for (a second line to the previous request) would answer this one.
+  for (pollfd fd{out_, POLLIN, 0}; ::poll(&fd, 1, 0) == 1 && (fd.revents & POLLIN);) {
+    char buf[4096];
+    const ssize_t r = ::read(out_, buf, sizeof buf);
+    if (r <= 0) break;
+    pending_.append(buf, static_cast<std::size_t>(r));
+  }
   if (!pending_.empty()) fail("answered more than one line to the previous request");
   const auto deadline = Clock::now() + std::chrono::duration_cast<Clock::duration>(timeout_);
   write_all(request + "\n", deadline);

@@ -43,12 +43,20 @@ Capabilities ProcessEngine::capabilities() const {
 }
 
 void ProcessEngine::fail(const std::string& op, const std::string& problem, const std::string& tail) {
-  std::string p = problem;
-  if (!tail.empty()) p += "; its stderr ends: " + tail;
-  throw EngineError("engine " + name_ + " (`" + process_.command() + "`)", "op " + op, p);
+  std::lock_guard<std::mutex> lock(failure_mutex_);
+  if (failure_.empty()) {
+    failed_op_ = op;
+    failure_ = problem + (tail.empty() ? "" : "; its stderr ends: " + tail);
+  }
+  throw EngineError("engine " + name_ + " (`" + process_.command() + "`)", "op " + failed_op_, failure_);
 }
 
 Json ProcessEngine::request(const Json& req, const std::string& op, bool error_ok) {
+  {
+    std::lock_guard<std::mutex> lock(failure_mutex_);
+    if (!failure_.empty())
+      throw EngineError("engine " + name_ + " (`" + process_.command() + "`)", "op " + failed_op_, failure_);
+  }
   std::string line;
   try {
     line = process_.round_trip(req.dump());
@@ -138,7 +146,8 @@ std::vector<std::optional<CcdAnswer>> ProcessEngine::ccd(const std::vector<CcdQu
 void ProcessEngine::take_scene() {
   std::unique_lock<std::mutex> lock(scene_mutex_);
   if (scene_taken_ && scene_holder_ == std::this_thread::get_id())
-    fail("create", "asked for a second simulation while one is running (the process holds one scene at a time)");
+    throw EngineError("engine " + name_ + " (`" + process_.command() + "`)", "op create",
+                      "asked for a second simulation while one is running (the process holds one scene at a time)");
   scene_free_.wait(lock, [&] { return !scene_taken_; });
   scene_taken_ = true;
   scene_holder_ = std::this_thread::get_id();

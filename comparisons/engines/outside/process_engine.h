@@ -51,6 +51,8 @@ class ProcessEngine final : public OutsideEngine, public std::enable_shared_from
   /// Ends the lease of a simulation (ProcessSimulation's destructor).
   void release_scene();
   /// Throws the EngineError of request `op`: "engine NAME (`COMMAND`): op OP: problem; its stderr ends: tail".
+  /// The engine is broken from then on: every later request throws this first error again, so
+  /// whichever thread reports it, the message names what failed first.
   [[noreturn]] void fail(const std::string& op, const std::string& problem, const std::string& tail = {});
 
   ProcessEngine(const std::string& name, const std::string& command, std::chrono::duration<double> timeout);
@@ -67,6 +69,8 @@ class ProcessEngine final : public OutsideEngine, public std::enable_shared_from
   std::condition_variable scene_free_;
   bool scene_taken_ = false;
   std::thread::id scene_holder_;
+  std::mutex failure_mutex_;
+  std::string failed_op_, failure_;  ///< the first failure (empty while the engine works)
 };
 
 }  // namespace tecido::outside
