@@ -10,9 +10,10 @@
 /// for that this engine cannot reproduce is listed by not_modelled(), never silently dropped.
 #include "core/geometry/types.h"
 #include "core/scene/scene.h"
+#include "reference/dynamics_engine.h"
+#include "reference/guarded_run.h"
 
 #include <memory>
-#include <optional>
 #include <string>
 #include <vector>
 
@@ -43,8 +44,9 @@ struct DeformableTwinOptions {
   int krylov_iterations = 0;
 };
 
-/// The deformable-world twin of one Scene. Not copyable (Bullet keeps pointers into it); movable.
-class DeformableTwin {
+/// The deformable-world twin of one Scene, behind the DynamicsEngine interface. Not copyable
+/// (Bullet keeps pointers into it); movable.
+class DeformableTwin final : public DynamicsEngine {
  public:
   /// Builds the world: a btSoftBody with node i = scene particle i (position, velocity, and the
   /// scene's inverse mass copied bit for bit; pinned = inverse mass 0), link s = scene spring s
@@ -55,11 +57,12 @@ class DeformableTwin {
   /// explicit mode, one internal step of scene.dt per step(). One extra pinned, massless node
   /// far away (after the scene's nodes, never reported) lifts Bullet's explicit-mode speed clamp
   /// |v| <= (bounding-box diagonal) / dt, which would otherwise slow small, fast bodies.
-  /// Bullet's mass-spring force has one elastic k and one "bending" k: a
-  /// scene with at most two distinct spring stiffnesses is modelled exactly (the less common
-  /// value goes to links flagged m_bbending); more values are reported by not_modelled().
+  /// Bullet's mass-spring force has one elastic k and one "bending" k: which springs are which
+  /// comes from the scene's cloth spec (type B elastic, type A bending; spring_families in
+  /// bullet_common.h), or from the springs' own stiffnesses in a scene without a cloth; a spring
+  /// that fits neither family is reported by not_modelled().
   explicit DeformableTwin(const Scene& scene, const DeformableTwinOptions& options = {});
-  ~DeformableTwin();
+  ~DeformableTwin() override;
   DeformableTwin(DeformableTwin&&) noexcept;
   DeformableTwin& operator=(DeformableTwin&&) noexcept;
   DeformableTwin(const DeformableTwin&) = delete;
@@ -68,17 +71,17 @@ class DeformableTwin {
   /// Advances one step of scene.dt (stepSimulation(dt, 1, dt): exactly one internal step).
   /// Returns false when a position or velocity became NaN or infinite; later calls do nothing
   /// and return false (as core's Simulation::step).
-  bool step();
+  bool step() override;
   /// Node positions in core's numbering (node i = scene particle i) [m].
-  std::vector<Vec3> positions() const;
+  std::vector<Vec3> positions() const override;
   /// Node velocities in core's numbering [m/s].
-  std::vector<Vec3> velocities() const;
+  std::vector<Vec3> velocities() const override;
   /// Scene features this engine does not reproduce, one line each: "<feature>: <why>".
   /// Empty when the twin is exact (up to round-off) for this scene.
-  std::vector<std::string> not_modelled() const;
+  std::vector<std::string> not_modelled() const override;
   /// Simulated time [s] = steps_done() * scene.dt.
-  double time() const;
-  long long steps_done() const;
+  double time() const override;
+  long long steps_done() const override;
   /// Distance [m] from a plane at which Bullet holds a resting node (the collision margin);
   /// compare rest heights and contact times against core with this offset in mind.
   double plane_contact_offset() const;
@@ -88,14 +91,10 @@ class DeformableTwin {
   std::unique_ptr<Impl> impl_;
 };
 
-/// Runs `scene` (its own dt ignored) with a DeformableTwin from its initial state for
-/// round(seconds / h) steps of h [s] and returns the node positions in core's numbering [m], or
-/// nothing when the run became unstable. Bullet keeps a diverging run finite (it zeroes NaN
-/// velocity increments and clamps speeds), so besides NaN/Inf a run counts as unstable when any
-/// node strays more than `stray_limit` [m] from its start (checked every 64 steps and at the end),
-/// the same test as core's tradeoff engines. Never hangs on a diverging run: the step count is fixed.
-std::optional<std::vector<Vec3>> run_deformable_twin(const Scene& scene, double h, double seconds,
-                                                     const DeformableTwinOptions& options = {},
-                                                     double stray_limit = 1e3);
+/// Runs `scene` (its own dt and integrator ignored) with a DeformableTwin from its initial state
+/// for round(seconds / h) steps of h [s] through the guarded runner (guarded_run.h: a non-finite
+/// state, or a node more than `stray_limit` [m] from its start, ends the run as failed).
+GuardedRun run_deformable_twin(const Scene& scene, double h, double seconds, const DeformableTwinOptions& options = {},
+                               double stray_limit = 1e3);
 
 }  // namespace tecido::reference

@@ -1,5 +1,7 @@
 #include "core/cloth/triangle_bvh.h"
 
+#include "core/platform/simd_level.h"
+
 #include <algorithm>
 #include <cfloat>
 #include <cmath>
@@ -96,17 +98,13 @@ TECIDO_BVH_TARGET_AVX512 unsigned leaf_mask16_avx512(const float* alo, const flo
   return box_mask16_avx512(alo, ahi, blo, bhi) & ~static_cast<unsigned>(share) & 0xFFFFu;
 }
 
-bool cpu_has_avx512f() {
-  __builtin_cpu_init();
-  return __builtin_cpu_supports("avx512f");
-}
 #endif
 
 }  // namespace
 
 bool TriangleBvh::wide_kernel_available() {
 #if TECIDO_BVH_AVX512
-  static const bool ok = cpu_has_avx512f();
+  static const bool ok = simd_level_allowed(SimdLevel::AVX512);  // the CPU has it and TECIDO_SIMD allows it
   return ok;
 #else
   return false;

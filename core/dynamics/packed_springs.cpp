@@ -1,5 +1,7 @@
 #include "core/dynamics/packed_springs.h"
 
+#include "core/platform/simd_level.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -37,13 +39,13 @@ const char* spring_kernel_name(SpringKernel k) {
 }
 
 bool spring_kernel_supported(SpringKernel k) {
-  // __builtin_cpu_init: safe even if called from a static initializer, before libgcc's own.
+  // The CPU has it and TECIDO_SIMD allows it (core/platform/simd_level.h).
   switch (k) {
     case SpringKernel::Scalar: return true;
 #if TECIDO_SPRING_X86
-    case SpringKernel::SSE2: return true;  // part of x86-64
-    case SpringKernel::AVX: __builtin_cpu_init(); return __builtin_cpu_supports("avx");
-    case SpringKernel::AVX512: __builtin_cpu_init(); return __builtin_cpu_supports("avx512f");
+    case SpringKernel::SSE2: return simd_level_allowed(SimdLevel::SSE2);
+    case SpringKernel::AVX: return simd_level_allowed(SimdLevel::AVX);
+    case SpringKernel::AVX512: return simd_level_allowed(SimdLevel::AVX512);
 #else
     default: return false;
 #endif

@@ -49,7 +49,7 @@ namespace tecido {
 /// elsewhere: Scalar only).
 enum class SpringKernel { Scalar, SSE2, AVX, AVX512 };
 const char* spring_kernel_name(SpringKernel k);
-/// Whether this build and CPU can run kernel k.
+/// Whether this build and CPU can run kernel k and TECIDO_SIMD allows it (core/platform/simd_level.h).
 bool spring_kernel_supported(SpringKernel k);
 /// The widest supported kernel.
 SpringKernel best_spring_kernel();

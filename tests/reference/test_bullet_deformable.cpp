@@ -5,11 +5,15 @@
 
 #include "core/cloth/cloth_builder.h"
 #include "core/dynamics/simulation.h"
+#include "tests/support/curtain.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <chrono>
 #include <iostream>
+#include <optional>
+#include <thread>
 
 namespace tecido::reference {
 namespace {
@@ -69,7 +73,7 @@ TEST(BulletDeformable, UndampedPinnedClothStaysWithinOneNanometreOfCoreOverOneSe
   EXPECT_GT(drop, 0.3);
 }
 
-// Two stiffness values (type B and type A springs): the less common one goes to Bullet's
+// Two stiffness values (type B and type A springs): the cloth spec's type A springs are Bullet's
 // "bending" links, which carry their own k, so the twin stays exact.
 TEST(BulletDeformable, TwoSpringStiffnessesAreModelledThroughBendingLinks) {
   const Scene scene = cloth_scene(7, 60.0, 15.0, 1.0 / 240.0, {{0, 0}, {0, 6}});
@@ -300,6 +304,114 @@ TEST(BulletDeformable, LooseParticlesOverAPlaneRestAtTheMargin) {
   DeformableTwin twin(s);
   for (int k = 0; k < 120; ++k) ASSERT_TRUE(twin.step());
   for (const Vec3& x : twin.positions()) EXPECT_NEAR(x.z(), twin.plane_contact_offset(), 1e-9);
+}
+
+// ---- the guarded fixed-time run on the tradeoff suite's curtain -------------------------------------
+
+using testing::core_run;
+using testing::curtain;
+using testing::kCurtainH0;
+using testing::kCurtainN;
+using testing::kCurtainT;
+using testing::rms;
+
+TEST(BulletDeformableRun, IsCoreSymplecticEulerOnTheCurtain) {
+  const Scene s = curtain(kCurtainN);
+  for (double h : {kCurtainH0, kCurtainH0 / 8}) {
+    const GuardedRun bullet = run_deformable_twin(s, h, kCurtainT);
+    ASSERT_TRUE(bullet.x.has_value()) << "h = " << h << ": " << bullet.reason;
+    const auto core = core_run(s, IntegratorKind::Symplectic, h, kCurtainT);
+    const double d = rms(*bullet.x, core);
+    std::cout << "[bullet-deformable] twin vs core symplectic, 8x8 curtain, h = " << h << " s, 1 s: " << d << " m RMS\n";
+    EXPECT_LT(d, 1e-12) << "h = " << h;
+  }
+}
+
+TEST(BulletDeformableRun, ErrorIsFirstOrderInTheStep) {
+  const Scene s = curtain(kCurtainN);
+  const auto& ref = testing::curtain_reference_motion();
+  std::vector<double> err;
+  for (int j = 2; j <= 4; ++j) {
+    const GuardedRun r = run_deformable_twin(s, kCurtainH0 / std::ldexp(1.0, j), kCurtainT);
+    ASSERT_TRUE(r.x.has_value());
+    err.push_back(rms(*r.x, ref));
+  }
+  for (std::size_t j = 1; j < err.size(); ++j) {
+    const double order = std::log2(err[j - 1] / err[j]);
+    std::cout << "[bullet-deformable] twin error " << err[j - 1] << " -> " << err[j] << " m on halving the step: order "
+              << order << "\n";
+    EXPECT_GT(order, 0.85);  // symplectic Euler: first order in position
+    EXPECT_LT(order, 1.15);
+  }
+}
+
+TEST(BulletDeformableRun, ExplicitTwinDoesNotDependOnTheSolverIterationCap) {
+  // The explicit step solves M dv = h f with a mass preconditioner: one Krylov iteration is exact.
+  const Scene s = curtain(kCurtainN);
+  DeformableTwinOptions one;
+  one.krylov_iterations = 1;
+  const GuardedRun a = run_deformable_twin(s, kCurtainH0, kCurtainT, one);
+  const GuardedRun b = run_deformable_twin(s, kCurtainH0, kCurtainT);
+  ASSERT_TRUE(a.x && b.x);
+  EXPECT_LT(rms(*a.x, *b.x), 1e-13);
+}
+
+TEST(BulletDeformableRun, ImplicitWorldIsStableBeyondTheExplicitLimitAndConvergesAtFirstOrder) {
+  const Scene s = curtain(kCurtainN);
+  const auto& ref = testing::curtain_reference_motion();
+  DeformableTwinOptions imp;
+  imp.implicit = true;
+  imp.krylov_iterations = 16;
+  // At 4 h0 symplectic Euler blows up; linearised backward Euler stays bounded (and damped).
+  EXPECT_FALSE(run_deformable_twin(s, 4 * kCurtainH0, kCurtainT).x.has_value());
+  const GuardedRun big = run_deformable_twin(s, 4 * kCurtainH0, kCurtainT, imp);
+  ASSERT_TRUE(big.x.has_value());
+  EXPECT_LT(rms(*big.x, ref), 0.5);
+  std::vector<double> err;
+  for (int j = 2; j <= 4; ++j) {
+    const GuardedRun r = run_deformable_twin(s, kCurtainH0 / std::ldexp(1.0, j), kCurtainT, imp);
+    ASSERT_TRUE(r.x.has_value());
+    err.push_back(rms(*r.x, ref));
+  }
+  for (std::size_t j = 1; j < err.size(); ++j) {
+    const double order = std::log2(err[j - 1] / err[j]);
+    std::cout << "[bullet-deformable] implicit world (16 CG iterations) error " << err[j - 1] << " -> " << err[j]
+              << " m: order " << order << "\n";
+    EXPECT_GT(order, 0.7);
+    EXPECT_LT(order, 1.3);
+  }
+}
+
+TEST(BulletDeformableRun, IsBitForBitReproducibleAlsoOnConcurrentThreads) {
+  // The tradeoff suite's front points must rerun bit-identically; each run builds a fresh world.
+  const Scene s = curtain(kCurtainN);
+  DeformableTwinOptions imp;
+  imp.implicit = true;
+  imp.krylov_iterations = 4;
+  const GuardedRun a1 = run_deformable_twin(s, kCurtainH0, kCurtainT), a2 = run_deformable_twin(s, kCurtainH0, kCurtainT);
+  const GuardedRun b1 = run_deformable_twin(s, kCurtainH0, kCurtainT, imp);
+  ASSERT_TRUE(a1.x && a2.x && b1.x);
+  EXPECT_EQ(*a1.x, *a2.x);
+  std::optional<std::vector<Vec3>> a3, b3;
+  std::thread ta([&] { a3 = run_deformable_twin(s, kCurtainH0, kCurtainT).x; });
+  std::thread tb([&] { b3 = run_deformable_twin(s, kCurtainH0, kCurtainT, imp).x; });
+  ta.join();
+  tb.join();
+  ASSERT_TRUE(a3 && b3);
+  EXPECT_EQ(*a3, *a1.x);
+  EXPECT_EQ(*b3, *b1.x);
+}
+
+TEST(BulletDeformableRun, HugeStepFailsWithAReasonInsteadOfReturningAClampedCloth) {
+  // Bullet zeroes NaN velocity increments and clamps speeds, so a blown-up run stays finite; the
+  // stray test must still call it failed, and the fixed step count must end it.
+  const Scene s = curtain(kCurtainN);
+  const GuardedRun r = run_deformable_twin(s, 0.25, 10.0);
+  EXPECT_FALSE(r.x.has_value());
+  EXPECT_GT(r.failed_at_step, 0);
+  EXPECT_LE(r.failed_at_step, 40);
+  EXPECT_FALSE(r.reason.empty());
+  EXPECT_FALSE(run_deformable_twin(s, 16 * kCurtainH0, kCurtainT).x.has_value());
 }
 
 }  // namespace

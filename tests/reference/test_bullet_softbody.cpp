@@ -1,16 +1,19 @@
-// Bullet's classic soft body (reference/bullet_softbody.h): numbering, the kLST calibration
-// against core's Hooke springs (static sag of a hanging cloth, core settled with air drag), and
-// the self-collision option.
+// Bullet's classic soft body (reference/bullet_softbody.h): numbering, what it models differently,
+// planes, the self-collision option, and the guarded fixed-time run on the tradeoff suite's curtain.
+// (Its kLST calibration is tested in test_klst_calibration.cpp.)
 #include "reference/bullet_softbody.h"
 
 #include "core/cloth/cloth_builder.h"
 #include "core/dynamics/simulation.h"
+#include "tests/support/curtain.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <iostream>
+#include <optional>
 #include <stdexcept>
+#include <thread>
 
 namespace tecido::reference {
 namespace {
@@ -57,54 +60,6 @@ TEST(BulletClassic, NodesAreCoreParticlesInOrder) {
     EXPECT_GT(drop_here, drop_above) << "row " << row;
     EXPECT_GT(drop_above, 0.0) << "row " << row - 1;
   }
-}
-
-// The acceptance case: calibrate kLST so Bullet's settled sag matches core's, then settle a
-// fresh classic body with that kLST and compare sags.
-TEST(BulletClassic, CalibratedHangingClothSagMatchesCore) {
-  const Scene scene = curtain(6, 100.0, 1e-3);
-  SagCalibrationOptions opt;  // piterations 10, kDP 0.05, core drag 10/s x mean mass
-  SagCalibration cal;
-  const double klst = calibrate_klst_for_sag(scene, opt, &cal);
-  std::cout << "[bullet-classic] kLST calibration (6x6 curtain, ks = 100 N/m, dt = 1 ms, piterations = "
-            << cal.piterations << ", kDP = " << cal.kdp << "): kLST = " << cal.klst << ", core sag = " << cal.core_sag
-            << " m, Bullet sag = " << cal.bullet_sag << " m, error = " << cal.sag_error << " m ("
-            << 100.0 * cal.relative_error << " %), sag with kLST = 1: " << cal.sag_at_klst_1 << " m, "
-            << cal.evaluations << " Bullet settles; settled shapes differ by " << cal.shape_rms << " m RMS, "
-            << cal.shape_max << " m at most\n";
-  RecordProperty("klst", std::to_string(cal.klst));
-  RecordProperty("sag_relative_error", std::to_string(cal.relative_error));
-  EXPECT_EQ(klst, cal.klst);
-  EXPECT_TRUE(cal.core_settled);
-  EXPECT_TRUE(cal.bullet_settled);
-  ASSERT_TRUE(cal.bracketed);
-  EXPECT_GT(cal.core_sag, 1e-3);  // a sag worth calibrating on
-  EXPECT_LE(cal.relative_error, opt.relative_tolerance);
-  EXPECT_LT(cal.klst, 1.0);
-  // The default kLST = 1 is measurably stiffer than core: the calibration did something.
-  EXPECT_LT(cal.sag_at_klst_1, 0.9 * cal.core_sag);
-
-  // A fresh body with the calibrated kLST, settled with damping, sags like core.
-  ClassicSoftBodyOptions co;
-  co.klst = klst;
-  co.piterations = opt.piterations;
-  co.kdp = opt.kdp;
-  ClassicSoftBody sb(scene, co);
-  double speed = 1.0;
-  for (int k = 0; k < 20000 && speed > opt.rest_speed; ++k) {
-    ASSERT_TRUE(sb.step());
-    speed = 0.0;
-    for (const Vec3& v : sb.velocities()) speed = std::max(speed, v.norm());
-  }
-  EXPECT_LT(speed, opt.rest_speed) << "did not settle";
-  const double sag = mean_sag(scene, sb.positions());
-  EXPECT_NEAR(sag, cal.core_sag, opt.relative_tolerance * cal.core_sag);
-}
-
-// A step too large for core's springs: the calibration must fail loudly, not match a NaN sag.
-TEST(BulletClassic, CalibrationRefusesAnUnstableCoreRun) {
-  const Scene scene = curtain(6, 100.0, 1.0 / 240.0);
-  EXPECT_THROW(calibrate_klst_for_sag(scene), std::runtime_error);
 }
 
 TEST(BulletClassic, ReportsWhatItModelsDifferently) {
@@ -192,6 +147,43 @@ TEST(BulletClassic, SelfCollisionOptionKeepsTwoLayersApart) {
             << gap_without << " m\n";
   EXPECT_LT(gap_without, 0.0);  // without it the upper layer passes through
   EXPECT_GT(gap_with, 0.0);
+}
+
+// ---- the guarded fixed-time run on the tradeoff suite's curtain -------------------------------------
+
+TEST(BulletClassicRun, IsBitForBitReproducibleAlsoOnConcurrentThreads) {
+  const Scene s = testing::curtain(testing::kCurtainN);
+  ClassicSoftBodyOptions cls;
+  cls.klst = 0.05;
+  cls.piterations = 4;
+  cls.kdp = 0.0;
+  const double h = testing::kCurtainH0, T = testing::kCurtainT;
+  const GuardedRun c1 = run_classic_soft_body(s, h, T, cls), c2 = run_classic_soft_body(s, h, T, cls);
+  ASSERT_TRUE(c1.x && c2.x);
+  EXPECT_EQ(*c1.x, *c2.x);
+  std::optional<std::vector<Vec3>> c3, c4;
+  std::thread ta([&] { c3 = run_classic_soft_body(s, h, T, cls).x; });
+  std::thread tb([&] { c4 = run_classic_soft_body(s, h, T, cls).x; });
+  ta.join();
+  tb.join();
+  ASSERT_TRUE(c3 && c4);
+  EXPECT_EQ(*c3, *c1.x);
+  EXPECT_EQ(*c4, *c1.x);
+}
+
+TEST(BulletClassicRun, HugeStepReturnsABoundedClothOrAReason) {
+  // The classic body keeps positions bounded by projection: at a huge step it either returns a
+  // bounded (wrong) cloth or fails with a reason, but it returns after the fixed step count.
+  const Scene s = testing::curtain(testing::kCurtainN);
+  ClassicSoftBodyOptions o;
+  o.klst = 1.0;
+  o.kdp = 0.0;
+  const GuardedRun c = run_classic_soft_body(s, 0.25, 10.0, o);
+  if (c.x) {
+    for (const Vec3& x : *c.x) EXPECT_TRUE(x.allFinite());
+  } else {
+    EXPECT_FALSE(c.reason.empty());
+  }
 }
 
 }  // namespace

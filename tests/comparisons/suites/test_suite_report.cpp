@@ -93,27 +93,3 @@ TEST(SuiteCli, OrderSuitePassesAndWritesTheReport) {
 
 }  // namespace
 }  // namespace tecido::suites
-
-#include "comparisons/suites/selfcollision_suite.h"
-
-namespace tecido::suites {
-namespace {
-
-TEST(PairAgreement, PlantedDisagreements) {
-  // Truth {(0,5),(1,7),(2,9)}; the engine misses (1,7) and invents (3,4) and (6,8).
-  PairAgreement a;
-  a.add({{0, 5}, {2, 9}, {3, 4}, {6, 8}}, {{0, 5}, {1, 7}, {2, 9}});
-  EXPECT_EQ(a.reported, 4);
-  EXPECT_EQ(a.true_positives, 2);
-  EXPECT_EQ(a.false_positives, 2);
-  EXPECT_EQ(a.missed, 1);
-  EXPECT_DOUBLE_EQ(a.precision(), 0.5);
-  EXPECT_DOUBLE_EQ(a.recall(), 2.0 / 3.0);
-  PairAgreement empty;
-  empty.add({}, {});
-  EXPECT_EQ(empty.precision(), 1.0);
-  EXPECT_EQ(empty.recall(), 1.0);
-}
-
-}  // namespace
-}  // namespace tecido::suites

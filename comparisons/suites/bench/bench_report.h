@@ -1,0 +1,33 @@
+#pragma once
+/// The `bench` suite's report: the method (both commands, the machine), the figures the README
+/// quotes, the project's speed goals against this run, every benchmark row and a scaling plot.
+/// Every number is from this run; "met" and "not met" are computed from it.
+#include "comparisons/suites/bench/figures.h"
+#include "comparisons/suites/suite.h"
+
+#include <string>
+#include <vector>
+
+namespace tecido::suites::bench {
+
+/// Min time, the machine (Google Benchmark's context), the two commands that produced the rows.
+std::string method_markdown(const Settings& s, const io::Json& context, const std::string& command,
+                            const std::string& sse2_command);
+
+/// The figures, each with the benchmark rows it is computed from.
+std::string figures_markdown(const Figures& f, const Settings& s);
+
+/// One row per goal (measured, target, met or not), then how many were met and which were not.
+std::string goals_markdown(const Figures& f, const std::vector<BenchRow>& rows, const Settings& s, const Goals& g);
+
+/// Every row of the main run, then the SSE2-only run's.
+std::string all_rows_markdown(const std::vector<BenchRow>& rows, const std::vector<BenchRow>& sse2_rows);
+
+/// Cost against n for the self-collision and cloth-step series under ctx.out_dir/bench; returns the
+/// Markdown image link ("" without gnuplot) and adds the plot to `plots`.
+std::string scaling_plot(const SuiteContext& ctx, const std::vector<BenchRow>& rows, std::vector<std::string>& plots);
+
+/// report.json's data: {"benchmarks": [...], "sse2_benchmarks": [...], "figures": {...}}.
+io::Json bench_json(const Figures& f, const std::vector<BenchRow>& rows, const std::vector<BenchRow>& sse2_rows);
+
+}  // namespace tecido::suites::bench

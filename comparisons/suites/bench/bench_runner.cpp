@@ -1,0 +1,40 @@
+#include "comparisons/suites/bench/bench_runner.h"
+
+#include <fmt/format.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <unistd.h>
+
+namespace tecido::suites::bench {
+
+std::string bench_binary() {
+  char buf[4096];
+  const ssize_t n = ::readlink("/proc/self/exe", buf, sizeof buf - 1);
+  if (n <= 0) return "";
+  buf[n] = 0;
+  const std::filesystem::path bin = std::filesystem::path(buf).parent_path() / "tecido-bench";
+  return std::filesystem::exists(bin) ? bin.string() : "";
+}
+
+BenchRun run_bench(const std::string& bin, const std::string& dir, const std::string& name, double min_time,
+                   const std::string& filter, const std::string& simd) {
+  BenchRun run;
+  std::filesystem::create_directories(dir);
+  const std::string json = dir + "/" + name + ".json";
+  const std::string args = fmt::format("--benchmark_format=json --benchmark_min_time={:g}{}", min_time,
+                                       filter.empty() ? "" : " --benchmark_filter='" + filter + "'");
+  const std::string env = simd.empty() ? "" : "TECIDO_SIMD=" + simd + " ";
+  run.command = env + "build/bin/tecido-bench " + args;
+  const std::string cmd =
+      fmt::format("{}'{}' {} --benchmark_out='{}.tmp' >/dev/null 2>'{}/{}.stderr'", env, bin, args, json, dir, name);
+  if (std::system(cmd.c_str()) != 0 || !std::filesystem::exists(json + ".tmp")) {
+    run.error = fmt::format("`{}` failed; see `bench/{}.stderr`", run.command, name);
+    return run;
+  }
+  std::filesystem::rename(json + ".tmp", json);
+  run.doc = io::read_json_file(json);
+  return run;
+}
+
+}  // namespace tecido::suites::bench

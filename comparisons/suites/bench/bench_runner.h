@@ -1,0 +1,25 @@
+#pragma once
+/// Running tecido-bench (Google Benchmark) from the `bench` suite.
+#include "comparisons/io/json_reader.h"
+
+#include <string>
+
+namespace tecido::suites::bench {
+
+/// build/bin/tecido-bench: the file next to the running executable ("" when there is none).
+std::string bench_binary();
+
+/// One run of tecido-bench: its JSON document, or why there is none.
+struct BenchRun {
+  io::Json doc;
+  std::string error;   ///< "" when the run succeeded
+  std::string command;  ///< the command line, as a user would type it (for the report)
+};
+
+/// Runs `bin` with --benchmark_format=json --benchmark_min_time=`min_time`, --benchmark_filter=`filter`
+/// when not empty and TECIDO_SIMD=`simd` when not empty; the JSON goes to `dir`/`name`.json and
+/// stderr to `dir`/`name`.stderr.
+BenchRun run_bench(const std::string& bin, const std::string& dir, const std::string& name, double min_time,
+                   const std::string& filter = "", const std::string& simd = "");
+
+}  // namespace tecido::suites::bench

@@ -1,0 +1,61 @@
+#include "comparisons/suites/bench/benchmark_json.h"
+
+#include <cmath>
+#include <set>
+
+namespace tecido::suites::bench {
+
+namespace {
+double ns_scale(const std::string& unit) {
+  return unit == "ns" ? 1.0 : unit == "us" ? 1e3 : unit == "ms" ? 1e6 : 1e9;
+}
+
+/// Google Benchmark's own keys; any other number in a row is a user counter.
+bool is_own_key(const std::string& key) {
+  static const std::set<std::string> own = {
+      "name", "run_name", "run_type", "repetitions", "repetition_index", "threads", "iterations", "real_time",
+      "cpu_time", "time_unit", "items_per_second", "family_index", "per_family_instance_index", "aggregate_name",
+      "bytes_per_second", "label", "error_occurred", "error_message"};
+  return own.count(key) != 0;
+}
+}  // namespace
+
+std::vector<BenchRow> parse_benchmark_json(const io::Json& doc) {
+  std::vector<BenchRow> rows;
+  if (!doc.is_object() || !doc.contains("benchmarks")) return rows;
+  for (const auto& b : doc["benchmarks"]) {
+    if (b.value("run_type", "iteration") != "iteration" || b.value("error_occurred", false)) continue;
+    BenchRow r;
+    r.name = b.value("run_name", b.value("name", ""));
+    r.label = b.value("label", "");
+    // CPU time: on a machine shared with other work, wall time also counts the time others take
+    // (every benchmark here is one thread without I/O, so on an idle machine the two agree).
+    r.ns_per_iter = b.value("cpu_time", 0.0) * ns_scale(b.value("time_unit", "ns"));
+    if (b.contains("items_per_second") && b["items_per_second"].get<double>() > 0)
+      r.ns_per_item = 1e9 / b["items_per_second"].get<double>();
+    for (auto it = b.begin(); it != b.end(); ++it)
+      if (!is_own_key(it.key()) && it.value().is_number()) r.counters[it.key()] = it.value();
+    rows.push_back(std::move(r));
+  }
+  return rows;
+}
+
+const BenchRow* find_row(const std::vector<BenchRow>& rows, const std::string& name) {
+  for (const auto& r : rows)
+    if (r.name == name) return &r;
+  return nullptr;
+}
+
+double ns_per_item(const std::vector<BenchRow>& rows, const std::string& name) {
+  const BenchRow* r = find_row(rows, name);
+  if (!r) return std::nan("");
+  return r->ns_per_item > 0 ? r->ns_per_item : r->ns_per_iter;
+}
+
+double ns_per_spring(const BenchRow* row) {
+  if (!row || !row->counters.contains("springs")) return std::nan("");
+  const double springs = row->counters["springs"].get<double>();
+  return springs > 0 ? row->ns_per_iter / springs : std::nan("");
+}
+
+}  // namespace tecido::suites::bench

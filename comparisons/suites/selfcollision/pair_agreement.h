@@ -1,0 +1,21 @@
+#pragma once
+/// How a set of reported triangle pairs compares with the true set: precision and recall.
+#include <array>
+#include <vector>
+
+namespace tecido::suites::selfcollision {
+
+/// Pair-set agreement summed over frames.
+struct PairAgreement {
+  long reported = 0, true_positives = 0, false_positives = 0, missed = 0;
+  /// Adds one frame: `got` and `truth` sorted, without duplicates.
+  void add(const std::vector<std::array<int, 2>>& got, const std::vector<std::array<int, 2>>& truth);
+  /// Reported pairs that are true / reported pairs (1 when nothing was reported).
+  double precision() const { return reported ? double(true_positives) / double(reported) : 1.0; }
+  /// True pairs reported / true pairs (1 when there were none).
+  double recall() const {
+    return (true_positives + missed) ? double(true_positives) / double(true_positives + missed) : 1.0;
+  }
+};
+
+}  // namespace tecido::suites::selfcollision

@@ -1,0 +1,79 @@
+#include "comparisons/suites/selfcollision/selfcollision_case.h"
+
+#include "comparisons/suites/sweep.h"
+#include "comparisons/suites/thread_cpu_time.h"
+
+#include <stdexcept>
+
+namespace tecido::suites::selfcollision {
+
+namespace {
+EngineScore score_engine(const SelfCollisionEngine& eng, const FrameSet& set,
+                         const std::vector<std::vector<TrianglePair>>& truth) {
+  EngineScore e;
+  e.engine = eng.name;
+  for (std::size_t i = 0; i < set.frames.size(); ++i) {
+    const double t0 = thread_cpu_seconds();
+    const auto got = eng.pairs(set.frames[i].x, set.triangles);
+    e.seconds += thread_cpu_seconds() - t0;
+    if (!got) continue;
+    ++e.answered;
+    e.pairs.add(*got, truth[i]);
+  }
+  return e;
+}
+}  // namespace
+
+SourceScore score_source(const FrameSource& source, const Settings& s, const std::string& data_dir,
+                         const SelfCollisionEngine& truth, const std::vector<SelfCollisionEngine>& engines) {
+  const FrameSet set = source.record(s, data_dir);
+  SourceScore out;
+  out.frames = static_cast<long>(set.frames.size());
+  out.triangles = static_cast<long>(set.triangles.size());
+  std::vector<std::vector<TrianglePair>> true_pairs;
+  for (const Frame& f : set.frames) {
+    auto t = truth.pairs(f.x, set.triangles);
+    if (!t) throw std::runtime_error("the truth engine " + truth.name + " gave no answer at t = " + std::to_string(f.time));
+    out.true_pairs += static_cast<long>(t->size());
+    out.frames_with_contact += t->empty() ? 0 : 1;
+    true_pairs.push_back(std::move(*t));
+  }
+  for (const SelfCollisionEngine& eng : engines) out.engines.push_back(score_engine(eng, set, true_pairs));
+  return out;
+}
+
+io::Json source_score_json(const SourceScore& s) {
+  io::Json engines = io::Json::array();
+  for (const EngineScore& e : s.engines) {
+    const PairAgreement& p = e.pairs;
+    engines.push_back({{"engine", e.engine}, {"answered", e.answered}, {"reported", p.reported},
+                       {"true_positives", p.true_positives}, {"false_positives", p.false_positives},
+                       {"missed", p.missed}, {"seconds", num(e.seconds)}});
+  }
+  return {{"frames", s.frames}, {"frames_with_contact", s.frames_with_contact}, {"true_pairs", s.true_pairs},
+          {"triangles", s.triangles}, {"engines", engines}};
+}
+
+SourceScore source_score_from_json(const io::Json& j) {
+  SourceScore s;
+  if (const std::string* err = case_error(j)) {
+    s.error = *err;
+    return s;
+  }
+  s.frames = j.at("frames").get<long>();
+  s.frames_with_contact = j.at("frames_with_contact").get<long>();
+  s.true_pairs = j.at("true_pairs").get<long>();
+  s.triangles = j.at("triangles").get<long>();
+  for (const io::Json& je : j.at("engines")) {
+    EngineScore e;
+    e.engine = je.at("engine").get<std::string>();
+    e.answered = je.at("answered").get<long>();
+    e.pairs = {je.at("reported").get<long>(), je.at("true_positives").get<long>(), je.at("false_positives").get<long>(),
+               je.at("missed").get<long>()};
+    e.seconds = get_num(je.at("seconds"));
+    s.engines.push_back(std::move(e));
+  }
+  return s;
+}
+
+}  // namespace tecido::suites::selfcollision

@@ -1,0 +1,48 @@
+#pragma once
+/// The engines the `tradeoff` suite compares, each a name and a factory of a
+/// reference::DynamicsEngine, all run by the one guarded fixed-time runner (reference/guarded_run.h):
+/// core's four integrators here, Bullet's engines in bullet_engines.h (reference build).
+#include "comparisons/suites/tradeoff/settings.h"
+#include "core/scene/scene.h"
+#include "reference/dynamics_engine.h"
+#include "reference/guarded_run.h"
+
+#include <functional>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace tecido::suites::tradeoff {
+
+struct TradeoffEngine {
+  std::string name;                   ///< e.g. "core-rk4"
+  double evaluations_per_step = 0.0;  ///< force evaluations per step, for the report (0 = not counted)
+  /// Builds the engine on `scene` at its dt (the scene's integrator is the engine's business).
+  /// May throw (the classic soft body when its kLST calibration fails): the run then fails with
+  /// that reason.
+  std::function<std::unique_ptr<reference::DynamicsEngine>(const Scene& scene)> make;
+  /// The suite runs this engine only on cloths of at most max_n x max_n nodes and at the
+  /// max_steps largest swept steps (0 = no limit); the points outside are not run.
+  int max_n = 0;
+  int max_steps = 0;
+
+  /// `scene` (its dt ignored) from its initial state at step h for round(seconds / h) steps,
+  /// through the guarded runner: failed at a non-finite state or a node more than stray_limit [m]
+  /// from its start, or when the engine cannot be built.
+  reference::GuardedRun run_guarded(const Scene& scene, double h, double seconds, double stray_limit = 1e3) const;
+  /// The positions of run_guarded, nothing when it failed.
+  std::optional<std::vector<Vec3>> run(const Scene& scene, double h, double seconds) const;
+};
+
+/// Core with integrator `kind` ("core-<integrator>").
+TradeoffEngine core_tradeoff_engine(IntegratorKind kind);
+
+/// Every engine, in report order: core's euler, symplectic, midpoint and rk4, then (reference
+/// build) Bullet's, with their ranges from s.bullet.
+std::vector<TradeoffEngine> tradeoff_engines(const Settings& s = Settings{});
+
+/// Whether the suite leaves out engine e's point on the n x n cloth at the j-th swept step.
+bool skipped(const TradeoffEngine& e, int n, std::size_t j);
+
+}  // namespace tecido::suites::tradeoff

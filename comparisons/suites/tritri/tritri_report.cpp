@@ -1,0 +1,109 @@
+#include "comparisons/suites/tritri/tritri_report.h"
+
+#include "comparisons/suites/tritri/check_plan.h"
+
+#include <fmt/format.h>
+
+#include <cmath>
+
+namespace tecido::suites::tritri {
+
+std::string method_markdown(const Settings& s, std::uint64_t seed, const std::string& referee,
+                            const std::vector<Family>& families) {
+  std::string md = fmt::format(
+      "{} random pairs and {} pairs of each adversarial family (seed {}), in cases of at most {} pairs of one family. "
+      "Each cell: pairs where the engine agrees with the referee `{}` (CGAL exact predicates) / pairs; `n/a` = the "
+      "engine gave no answer. ns/pair: CPU time of the case's thread per random pair, while the other cases run on "
+      "the other cores (the `bench` suite times the same tests alone). Families:\n\n",
+      s.random_pairs, s.pairs_per_family, seed, s.block, referee);
+  for (const Family& f : families) md += fmt::format("- `{}`: {}\n", f.name, f.about);
+  return md + "\n";
+}
+
+namespace {
+std::string cell(const Tally& t) {
+  return fmt::format("{}/{}{}", t.agree, t.pairs, t.no_answer ? fmt::format(" ({} n/a)", t.no_answer) : "");
+}
+}  // namespace
+
+std::string agreement_table(const std::vector<Family>& families, const AgreementTable& table) {
+  std::string md = "| engine | ns/pair |", rule = "|---|---:|", truth = "| (referee: intersecting) | |";
+  for (std::size_t f = 0; f < families.size(); ++f) {
+    md += " " + families[f].name + " |";
+    rule += "---:|";
+    truth += table.error[f].empty() ? fmt::format(" {} |", table.intersecting[f]) : " failed |";
+  }
+  md += "\n" + rule + "\n" + truth + "\n";
+  for (std::size_t e = 0; e < table.engines.size(); ++e) {
+    const double ns = ns_per_pair(table, e);
+    md += fmt::format("| {} | {} |", table.engines[e], std::isfinite(ns) ? fmt::format("{:.0f}", ns) : "–");
+    for (std::size_t f = 0; f < families.size(); ++f)
+      md += " " + (table.error[f].empty() ? cell(table.tally[f][e]) : std::string("failed")) + " |";
+    md += "\n";
+  }
+  for (std::size_t f = 0; f < families.size(); ++f)
+    if (!table.error[f].empty()) md += fmt::format("\nFamily `{}` failed: {}\n", families[f].name, table.error[f]);
+  return md;
+}
+
+namespace {
+/// "agrees on every pair" or "disagrees on coplanar (3 of 500), ...; no answer on ... (94)".
+std::string engine_findings(const std::vector<Family>& families, const AgreementTable& table, std::size_t e) {
+  std::string wrong, silent;
+  for (std::size_t f = 0; f < families.size(); ++f) {
+    if (!table.error[f].empty()) continue;
+    const Tally& t = table.tally[f][e];
+    const long bad = t.pairs - t.agree - t.no_answer;
+    if (bad > 0) wrong += fmt::format("{}{} ({} of {})", wrong.empty() ? "" : ", ", families[f].name, bad, t.pairs);
+    if (t.no_answer > 0) silent += fmt::format("{}{} ({})", silent.empty() ? "" : ", ", families[f].name, t.no_answer);
+  }
+  std::string s = wrong.empty() ? "agrees with the referee on every evaluated pair" : "disagrees on " + wrong;
+  if (!silent.empty()) s += "; no answer on " + silent;
+  return s;
+}
+
+const char* scope_words(CheckScope scope) {
+  switch (scope) {
+    case CheckScope::EveryFamily: return "checked on every family";
+    case CheckScope::RandomOnly: return "checked on random pairs; adversarial rows reported";
+    case CheckScope::Reported: return "reported, not checked";
+  }
+  return "";
+}
+
+}  // namespace
+
+std::string conclusions_markdown(const std::vector<Family>& families, const AgreementTable& table,
+                                 const std::string& referee) {
+  std::string md = "From this table:\n\n";
+  for (std::size_t e = 0; e < table.engines.size(); ++e) {
+    if (table.engines[e] == referee) continue;
+    md += fmt::format("- `{}` ({}): {}.\n", table.engines[e], scope_words(check_scope(table.engines[e], referee)),
+                      engine_findings(families, table, e));
+  }
+  return md;
+}
+
+std::string disagreements_markdown(std::size_t kept, long found, const std::string& file) {
+  return fmt::format(
+      "\n{} of the {} disagreements with the referee are in `{}` (ids `engine:family/k`); `tecido tritri --pairs "
+      "DIR/{} --json`, DIR being this report's directory, reruns them with every engine.\n",
+      kept, found, file, file);
+}
+
+io::Json table_json(const std::vector<Family>& families, const AgreementTable& table) {
+  io::Json data = io::Json::object();
+  for (std::size_t e = 0; e < table.engines.size(); ++e) {
+    const double ns = ns_per_pair(table, e);
+    io::Json& j = data[table.engines[e]];
+    j["ns_per_pair"] = std::isfinite(ns) ? io::Json(ns) : io::Json(nullptr);
+    for (std::size_t f = 0; f < families.size(); ++f) {
+      const Tally& t = table.tally[f][e];
+      j[families[f].name] = {{"agree", t.agree}, {"pairs", t.pairs}, {"no_answer", t.no_answer}};
+      if (!table.error[f].empty()) j[families[f].name]["error"] = table.error[f];
+    }
+  }
+  return data;
+}
+
+}  // namespace tecido::suites::tritri

@@ -1,0 +1,113 @@
+#include "comparisons/suites/tritri/tritri_suite.h"
+
+#include "comparisons/suites/tritri/agreement.h"
+#include "comparisons/suites/tritri/case_index.h"
+#include "comparisons/suites/tritri/check_plan.h"
+#include "comparisons/suites/tritri/disagreements.h"
+#include "comparisons/suites/tritri/tritri_case.h"
+#include "comparisons/suites/tritri/tritri_report.h"
+
+#include <memory>
+
+namespace tecido::suites {
+
+namespace {
+
+using tritri::AgreementTable;
+using tritri::Family;
+
+constexpr const char* kReferee = "exact";
+constexpr const char* kDisagreementFile = "tritri/disagreements.json";
+
+/// What the cases and the assembly share; built from the context alone, before any case runs.
+struct Plan {
+  tritri::Settings settings;
+  std::uint64_t seed = 0;  ///< of the pairs
+  std::vector<Family> families;
+  std::vector<TriTriEngine> engines;
+  const TriTriEngine* referee = nullptr;  ///< into engines
+  std::vector<tritri::CaseRange> cases;
+  CheckList checks;
+};
+
+std::vector<std::string> engine_names(const Plan& plan) {
+  std::vector<std::string> names;
+  for (const TriTriEngine& e : plan.engines) names.push_back(e.name);
+  return names;
+}
+
+std::shared_ptr<Plan> make_plan(const SuiteContext& ctx, const tritri::Settings& settings, std::vector<Family> families,
+                                std::vector<TriTriEngine> engines) {
+  auto plan = std::make_shared<Plan>();
+  plan->settings = settings;
+  plan->seed = substream(ctx.seed, 2);
+  plan->families = std::move(families);
+  plan->engines = std::move(engines);
+  for (const TriTriEngine& e : plan->engines)
+    if (e.name == kReferee) plan->referee = &e;
+  if (!plan->referee) return plan;
+  plan->cases = tritri::case_ranges(plan->settings, plan->families);
+  plan->checks = tritri::declare_checks(plan->families, engine_names(*plan), kReferee, *ctx.tolerances);
+  return plan;
+}
+
+/// Each declared check gets its family's agreement, or fails with the family's error.
+void record(CheckList& checks, const Plan& plan, const AgreementTable& table) {
+  for (std::size_t e = 0; e < plan.engines.size(); ++e) {
+    for (std::size_t f = 0; f < plan.families.size(); ++f) {
+      const std::string name = tritri::check_name(plan.engines[e].name, plan.families[f].name);
+      if (!checks.declared(name)) continue;
+      if (!table.error[f].empty()) {
+        checks.fail(name, table.error[f]);
+      } else {
+        checks.set(name, table.tally[f][e].rate());
+      }
+    }
+  }
+}
+
+SuiteResult assemble(const Plan& plan, const SuiteContext& ctx, const std::vector<io::Json>& results) {
+  SuiteResult res;
+  res.name = "tritri";
+  if (!plan.referee) {
+    res.markdown = "The exact referee is not built in (reference adapters off): no agreement measured, no check declared.\n";
+    return res;
+  }
+  AgreementTable table = tritri::empty_table(plan.families.size(), engine_names(plan));
+  for (std::size_t k = 0; k < results.size(); ++k) tritri::add_case(table, plan.cases.at(k), plan.families, results[k]);
+  CheckList checks = plan.checks;
+  record(checks, plan, table);
+  const auto kept = tritri::disagreement_pairs(plan.seed, plan.families, table, plan.settings.max_disagreements);
+  tritri::write_disagreements(ctx.out_dir + "/" + kDisagreementFile, kept);
+  res.markdown = tritri::method_markdown(plan.settings, ctx.seed, kReferee, plan.families) +
+                 tritri::agreement_table(plan.families, table) + "\n" +
+                 tritri::conclusions_markdown(plan.families, table, kReferee) +
+                 tritri::disagreements_markdown(kept.size(), tritri::disagreements_found(table), kDisagreementFile);
+  res.data = tritri::table_json(plan.families, table);
+  res.checks = checks.finish();
+  return res;
+}
+
+}  // namespace
+
+Sweep tritri_sweep_for(const SuiteContext& ctx, const tritri::Settings& settings, std::vector<Family> families,
+                       std::vector<TriTriEngine> engines) {
+  std::shared_ptr<const Plan> plan = make_plan(ctx, settings, std::move(families), std::move(engines));
+  Sweep s;
+  s.cases = plan->cases.size();
+  s.run_case = [plan](std::size_t k) {
+    return tritri::run_tritri_case(plan->seed, plan->families, plan->cases.at(k), *plan->referee, plan->engines,
+                                   plan->settings.max_disagreements);
+  };
+  const SuiteContext c = ctx;
+  s.assemble = [plan, c](const std::vector<io::Json>& results) { return assemble(*plan, c, results); };
+  return s;
+}
+
+Sweep tritri_sweep(const SuiteContext& ctx) {
+  return tritri_sweep_for(ctx, tritri::settings(ctx.quick), tritri::families(), tri_tri_engines());
+}
+
+SuiteResult run_tritri_suite(const SuiteContext& ctx) { return run_sweep(&tritri_sweep, ctx, "tritri"); }
+
+}  // namespace tecido::suites

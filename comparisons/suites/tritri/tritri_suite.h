@@ -1,0 +1,28 @@
+#pragma once
+/// Suite `tritri`: every triangle-triangle engine against the exact referee on random pairs and
+/// adversarial families, by family, with nanoseconds per random pair.
+///
+/// Layout: settings.h (what runs), families.* (one generator per family, in a table),
+/// case_index.* (pairs into cases), tritri_case.* (one case), agreement.* (the statistics),
+/// check_plan.* (the checks, declared before anything runs), disagreements.* (the pairs file),
+/// tritri_report.* (tables and prose); this file builds the sweep and assembles.
+#include "comparisons/engines/tri_tri_engines.h"
+#include "comparisons/suites/suite.h"
+#include "comparisons/suites/sweep.h"
+#include "comparisons/suites/tritri/families.h"
+#include "comparisons/suites/tritri/settings.h"
+
+#include <vector>
+
+namespace tecido::suites {
+
+/// The suite as a sweep with `settings` over `families` and `engines`; the referee is the engine
+/// named "exact" (without one, no case runs and no check is declared: the report says so). Case k
+/// is case_ranges(...)[k]: every engine on one block of one family.
+Sweep tritri_sweep_for(const SuiteContext& ctx, const tritri::Settings& settings, std::vector<tritri::Family> families,
+                       std::vector<TriTriEngine> engines);
+/// tritri_sweep_for with tritri::settings(ctx.quick), tritri::families() and every registered engine.
+Sweep tritri_sweep(const SuiteContext& ctx);
+SuiteResult run_tritri_suite(const SuiteContext& ctx);
+
+}  // namespace tecido::suites
