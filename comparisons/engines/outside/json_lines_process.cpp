@@ -110,8 +110,9 @@ long long JsonLinesProcess::round_trips() const {
   return round_trips_;
 }
 
-std::string JsonLinesProcess::round_trip(const std::string& request) {
+std::string JsonLinesProcess::round_trip(const std::string& request, double* seconds) {
   std::lock_guard<std::mutex> lock(mutex_);
+  const auto start = Clock::now();
   if (!failure_.empty()) throw ProcessFailure(failure_, tail_line());
   // Output nobody asked for (a second line to the previous request) would answer this one.
   for (pollfd fd{out_, POLLIN, 0}; ::poll(&fd, 1, 0) == 1 && (fd.revents & POLLIN);) {
@@ -121,20 +122,24 @@ std::string JsonLinesProcess::round_trip(const std::string& request) {
     pending_.append(buf, static_cast<std::size_t>(r));
   }
   if (!pending_.empty()) fail("answered more than one line to the previous request");
-  const auto deadline = Clock::now() + std::chrono::duration_cast<Clock::duration>(timeout_);
-  write_all(request + "\n", deadline);
-  std::string line = read_line(deadline);
+  const std::chrono::duration<double> limit =
+      round_trips_ == 0 ? std::max(timeout_, std::chrono::duration<double>(kStartupAllowance)) : timeout_;
+  const auto deadline = start + std::chrono::duration_cast<Clock::duration>(limit);
+  write_all(request + "\n", deadline, limit);
+  std::string line = read_line(deadline, limit);
   ++round_trips_;
+  if (seconds) *seconds = std::chrono::duration<double>(Clock::now() - start).count();
   return line;
 }
 
-void JsonLinesProcess::write_all(const std::string& data, Clock::time_point deadline) {
+void JsonLinesProcess::write_all(const std::string& data, Clock::time_point deadline,
+                                 std::chrono::duration<double> limit) {
   std::size_t done = 0;
   while (done < data.size()) {
     pollfd fds[2] = {{in_, POLLOUT, 0}, {err_, POLLIN, 0}};
     const int n = ::poll(fds, err_ >= 0 ? 2 : 1, millis_until(deadline));
     if (n < 0 && errno == EINTR) continue;
-    if (n == 0) fail("did not read its request within " + seconds_text(timeout_));
+    if (n == 0) fail("did not read its request within " + seconds_text(limit));
     if (err_ >= 0 && fds[1].revents) drain_stderr();
     if (fds[0].revents & (POLLERR | POLLHUP)) fail("stopped reading its input: " + exit_description());
     if (!(fds[0].revents & POLLOUT)) continue;
@@ -145,7 +150,7 @@ void JsonLinesProcess::write_all(const std::string& data, Clock::time_point dead
   }
 }
 
-std::string JsonLinesProcess::read_line(Clock::time_point deadline) {
+std::string JsonLinesProcess::read_line(Clock::time_point deadline, std::chrono::duration<double> limit) {
   for (;;) {
     const std::size_t nl = pending_.find('\n');
     if (nl != std::string::npos) {
@@ -157,7 +162,7 @@ std::string JsonLinesProcess::read_line(Clock::time_point deadline) {
     pollfd fds[2] = {{out_, POLLIN, 0}, {err_, POLLIN, 0}};
     const int n = ::poll(fds, err_ >= 0 ? 2 : 1, millis_until(deadline));
     if (n < 0 && errno == EINTR) continue;
-    if (n == 0) fail("no reply within " + seconds_text(timeout_) + " (--engine-timeout)");
+    if (n == 0) fail("no reply within " + seconds_text(limit) + (round_trips_ == 0 ? " (start-up allowance)" : " (--engine-timeout)"));
     if (err_ >= 0 && fds[1].revents) drain_stderr();
     if (!fds[0].revents) continue;
     char buf[65536];

@@ -36,16 +36,21 @@ class JsonLinesProcess {
   JsonLinesProcess(const JsonLinesProcess&) = delete;
   JsonLinesProcess& operator=(const JsonLinesProcess&) = delete;
 
-  /// Writes `request` and a newline, returns the reply line without its newline.
-  std::string round_trip(const std::string& request);
+  /// Writes `request` and a newline, returns the reply line without its newline. `seconds`, when
+  /// given, receives the round trip's wall time from this thread's turn on (waiting excluded). The
+  /// first round trip may take kStartupAllowance when that is longer than the timeout: it includes
+  /// the child's start-up (an interpreter loading its modules on a busy machine).
+  std::string round_trip(const std::string& request, double* seconds = nullptr);
+  static constexpr double kStartupAllowance = 10.0;  ///< [s]
 
   const std::string& command() const { return command_; }
   /// Round trips so far (reports quote the door's cost).
   long long round_trips() const;
 
  private:
-  void write_all(const std::string& data, std::chrono::steady_clock::time_point deadline);
-  std::string read_line(std::chrono::steady_clock::time_point deadline);
+  void write_all(const std::string& data, std::chrono::steady_clock::time_point deadline,
+                 std::chrono::duration<double> limit);
+  std::string read_line(std::chrono::steady_clock::time_point deadline, std::chrono::duration<double> limit);
   /// Reads what the child wrote on stderr without blocking.
   void drain_stderr();
   /// Kills the child, records `problem` and throws it.

@@ -71,6 +71,10 @@ class OutsideEngine {
 
 using OutsideEnginePtr = std::shared_ptr<OutsideEngine>;
 
+/// Wall time this thread has spent in round trips of process engines, waiting for a turn excluded
+/// [s]: the cost of a process door, which the thread's CPU time does not see.
+double door_seconds_on_this_thread();
+
 /// "not modelled by NAME: REASON", the line reports print for a refused scene.
 inline std::string not_modelled_line(const std::string& engine, const std::string& reason) {
   return "not modelled by " + engine + ": " + reason;

@@ -9,6 +9,12 @@ namespace tecido::outside {
 
 using io::Json;
 
+namespace {
+thread_local double door_seconds = 0.0;  ///< see door_seconds_on_this_thread()
+}  // namespace
+
+double door_seconds_on_this_thread() { return door_seconds; }
+
 ProcessEngine::ProcessEngine(const std::string& name, const std::string& command, std::chrono::duration<double> timeout)
     : name_(name), process_(command, timeout) {}
 
@@ -59,7 +65,9 @@ Json ProcessEngine::request(const Json& req, const std::string& op, bool error_o
   }
   std::string line;
   try {
-    line = process_.round_trip(req.dump());
+    double seconds = 0.0;
+    line = process_.round_trip(req.dump(), &seconds);
+    door_seconds += seconds;
   } catch (const ProcessFailure& f) {
     fail(op, f.what(), f.stderr_tail());
   }

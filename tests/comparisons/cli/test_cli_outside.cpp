@@ -85,6 +85,34 @@ TEST(CliOutside, TritriPythonEngineAgainstExact) {
   std::filesystem::remove_all(dir);
 }
 
+TEST(CliOutside, TritriSuiteCatchesThePluginsMisses) {
+  const auto dir = testing::temp_dir("outside-tritri-suite");
+  const auto r = run_cli("suite tritri --quick --threads 2 --plugin " + quoted(testing::kExamplePlugin) +
+                         " --engines mt-plugin,core-mt --out " + quoted(dir.string()));
+  EXPECT_EQ(r.code, 1) << r.err;  // the seed's MT misses touching and coplanar pairs: its checks fail
+  const json report = json::parse(testing::slurp(dir / "report.json"));
+  const json& data = report["suites"][0]["data"];
+  ASSERT_TRUE(data.contains("mt-plugin"));
+  for (const auto& [family, cell] : data["core-mt"].items()) {
+    if (!cell.is_object()) continue;
+    EXPECT_EQ(data["mt-plugin"][family], cell) << family;  // the same test through the door: the same answers
+  }
+  // Coplanar pairs: every det is 0, so MT answers false; it agrees exactly on the non-intersecting ones.
+  EXPECT_LT(data["mt-plugin"]["coplanar"]["agree"].get<long>(), data["mt-plugin"]["coplanar"]["pairs"].get<long>());
+  const auto checks = checks_of(report, "/agreement/coplanar");
+  bool plugin_checked = false;
+  for (const auto& c : checks)
+    if (c["name"] == "tritri/mt-plugin/agreement/coplanar") {
+      plugin_checked = true;
+      EXPECT_FALSE(c["pass"].get<bool>());
+      EXPECT_EQ(c["tolerance"], "/tritri/outside_min_agreement");
+    }
+  EXPECT_TRUE(plugin_checked);
+  for (const auto& c : report["suites"][0]["checks"])
+    EXPECT_EQ(c["name"].get<std::string>().find("core-mt"), std::string::npos);  // core-mt: reported, not checked
+  std::filesystem::remove_all(dir);
+}
+
 TEST(CliOutside, OrderSuiteFitsThePluginsEulerAtOne) {
   const auto dir = testing::temp_dir("outside-order");
   const auto r = run_cli("suite order --quick --threads 2 --plugin " + quoted(testing::kExamplePlugin) +

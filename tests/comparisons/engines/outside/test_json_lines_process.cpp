@@ -52,19 +52,29 @@ TEST(JsonLinesProcess, KilledBySignal) {
 }
 
 TEST(JsonLinesProcess, HangPastTheTimeout) {
-  JsonLinesProcess p("read -r l; echo 'thinking' >&2; sleep 30", 300ms);
+  JsonLinesProcess p("read -r l; echo ready; read -r l; echo 'thinking' >&2; sleep 30", 300ms);
+  EXPECT_EQ(p.round_trip("hello"), "ready");
   const auto t0 = std::chrono::steady_clock::now();
   std::string tail;
   const std::string what = failure(p, "x", &tail);
-  EXPECT_NE(what.find("no reply within 0.3 s"), std::string::npos) << what;
+  EXPECT_NE(what.find("no reply within 0.3 s (--engine-timeout)"), std::string::npos) << what;
   EXPECT_EQ(tail, "thinking");
   // The child's group was killed: the round trip did not wait for sleep 30.
   EXPECT_LT(std::chrono::steady_clock::now() - t0, 10s);
 }
 
+TEST(JsonLinesProcess, FirstReplyHasTheStartUpAllowance) {
+  // A slow start (an interpreter loading on a busy machine) is not a hang: the first reply may take
+  // up to kStartupAllowance even when the timeout is shorter; the second may not.
+  JsonLinesProcess p("sleep 1; read -r l; echo ready; read -r l; sleep 1; echo late", 300ms);
+  EXPECT_EQ(p.round_trip("hello"), "ready");
+  EXPECT_NE(failure(p, "x").find("no reply within 0.3 s"), std::string::npos);
+}
+
 TEST(JsonLinesProcess, ChildThatNeverReadsItsInput) {
-  // 8 MB request to a child that ignores stdin: the write cannot finish, the deadline ends it.
-  JsonLinesProcess p("sleep 30", 300ms);
+  // 8 MB request to a child that stops reading: the write cannot finish, the deadline ends it.
+  JsonLinesProcess p("read -r l; echo ready; sleep 30", 300ms);
+  EXPECT_EQ(p.round_trip("hello"), "ready");
   const std::string what = failure(p, std::string(8 << 20, 'x'));
   EXPECT_NE(what.find("did not read its request within 0.3 s"), std::string::npos) << what;
 }
