@@ -4,6 +4,11 @@
 // on the mix; items/s counts queries.
 //   BM_CCD/core/vertex-face, BM_CCD/core/edge-edge   core's test (core/geometry/ccd.h)
 //   BM_CCD/core/<kind>/<category>                    the same on one category of the mix
+//   BM_CCD/exact/<kind>, BM_CCD/fcl/<kind>           the exact referee (reference/exact_ccd.h) and
+//                                                    FCL's intersect_VF/EE (reference/fcl_adapter.h),
+//                                                    and per category, on the same queries
+//   BM_CCD/bullet/vertex-face                        Bullet's bernsteinCCD (reference/bullet_ccd.h;
+//                                                    Bullet has no edge-edge test)
 // Counters (computed outside the timed loop): `hit_share`, the share of queries answered hit;
 // for core, `inclusion_share`, the share that needed the inclusion search (degenerate motion),
 // and `boxes_per_query`, its boxes per query of the set.
@@ -11,6 +16,11 @@
 // BM_CCD/fcl/vertex-face and BM_CCD/fcl/edge-edge (reference engines under TECIDO_HAVE_REFERENCE).
 #include "bench/ccd_queries.h"
 #include "core/geometry/ccd.h"
+#ifdef TECIDO_HAVE_REFERENCE
+#include "reference/bullet_ccd.h"
+#include "reference/exact_ccd.h"
+#include "reference/fcl_adapter.h"
+#endif
 
 #include <benchmark/benchmark.h>
 
@@ -58,10 +68,19 @@ void run_ccd(benchmark::State& state, CcdFn fn, CcdKind kind, const char* catego
 
 CcdAnswer core_ccd(const CcdQuery& q) { return tecido::ccd(q); }
 
-/// BM_CCD/<name>/<kind> for both kinds and, with per_category, BM_CCD/<name>/<kind>/<category>.
-void register_engine(const char* name, CcdFn fn, bool core_counters, bool per_category) {
+#ifdef TECIDO_HAVE_REFERENCE
+CcdAnswer exact_ccd(const CcdQuery& q) { return tecido::reference::to_ccd_answer(tecido::reference::exact_ccd(q)); }
+CcdAnswer fcl_ccd(const CcdQuery& q) { return tecido::reference::fcl_ccd(q); }
+/// Vertex-face only (registered for that kind alone).
+CcdAnswer bullet_ccd(const CcdQuery& q) { return tecido::reference::bullet_ccd(q).value_or(CcdAnswer{}); }
+#endif
+
+/// BM_CCD/<name>/<kind> for both kinds (or vertex-face alone) and, with per_category,
+/// BM_CCD/<name>/<kind>/<category>.
+void register_engine(const char* name, CcdFn fn, bool core_counters, bool per_category, bool vertex_face_only = false) {
   const char* categories[] = {"random-large", "random-small", "contact", "near-miss", "coplanar", "degenerate"};
   for (const CcdKind kind : {CcdKind::VertexFace, CcdKind::EdgeEdge}) {
+    if (vertex_face_only && kind != CcdKind::VertexFace) continue;
     const std::string base = std::string("BM_CCD/") + name + "/" + tecido::ccd_kind_name(kind);
     benchmark::RegisterBenchmark(base.c_str(), run_ccd, fn, kind, nullptr, core_counters);
     if (per_category)
@@ -72,6 +91,11 @@ void register_engine(const char* name, CcdFn fn, bool core_counters, bool per_ca
 
 const bool registered = [] {
   register_engine("core", &core_ccd, true, true);
+#ifdef TECIDO_HAVE_REFERENCE
+  register_engine("exact", &exact_ccd, false, true);
+  register_engine("fcl", &fcl_ccd, false, true);
+  register_engine("bullet", &bullet_ccd, false, true, true);
+#endif
   return true;
 }();
 

@@ -4,7 +4,12 @@
 // undefined behaviour (UBSan), a leak (LeakSanitizer) or a broken invariant of what it
 // accepted is a finding: the target prints what it saw and aborts, so libFuzzer saves the
 // input as crash-<sha1> (scripts/fuzz.sh puts it under build-fuzz/artifacts/<target>/).
+// Bounded work is checked from outside: scripts/fuzz.sh runs every target with -rss_limit_mb and
+// -timeout tight enough for inputs up to -max_len (large enough to pass io::kMaxJsonDepth many
+// times over), so a reader whose time or memory is not linear in its input is a finding too.
 #include "comparisons/io/input_error.h"
+#include "comparisons/io/json_reader.h"
+#include "comparisons/io/limits.h"
 
 #include <cstddef>
 #include <cstdint>
@@ -13,6 +18,9 @@
 #include <exception>
 #include <string>
 #include <typeinfo>
+#include <unordered_set>
+#include <utility>
+#include <vector>
 
 namespace tecido::fuzz {
 
@@ -40,6 +48,36 @@ void expect_only_input_errors(const char* target, F&& body) {
   } catch (...) {
     finding(target, "non-standard exception");
   }
+}
+
+/// Nesting depth of an accepted document, without recursion (the reader promises at most
+/// io::kMaxJsonDepth).
+inline int json_depth(const io::Json& doc) {
+  int deepest = 0;
+  std::vector<std::pair<const io::Json*, int>> todo{{&doc, 0}};
+  while (!todo.empty()) {
+    const auto [j, depth] = todo.back();
+    todo.pop_back();
+    if (!j->is_structured()) continue;
+    deepest = depth + 1 > deepest ? depth + 1 : deepest;
+    for (const auto& child : *j) todo.push_back({&child, depth + 1});
+  }
+  return deepest;
+}
+
+/// Parses like every JSON reader and checks the depth promise of what was accepted.
+inline io::Json parse_checked(const char* target, const std::string& text) {
+  io::Json doc = io::parse_json_text(text, "fuzz.json");
+  if (json_depth(doc) > io::kMaxJsonDepth) finding(target, "accepted nesting deeper than io::kMaxJsonDepth");
+  return doc;
+}
+
+/// Accepted entries of a query file have distinct ids (results are keyed by them).
+template <class Entries>
+void expect_unique_ids(const char* target, const Entries& entries) {
+  std::unordered_set<std::string> seen;
+  for (const auto& e : entries)
+    if (!seen.insert(e.id).second) finding(target, "accepted two entries with id " + e.id);
 }
 
 }  // namespace tecido::fuzz

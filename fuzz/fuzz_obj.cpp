@@ -1,6 +1,7 @@
 // libFuzzer target: bytes -> io::parse_obj_text (the mesh reader of `tecido selfcollide`).
 // Rejections must be io::InputError; an accepted mesh must have at least one triangle, finite
-// vertices, and triangles of three different, valid vertex indices, each with its source line.
+// vertices, and triangles of three different, valid vertex indices, each with its source line,
+// and no more vertices and triangles than io::kMaxMeshVertices and io::kMaxMeshTriangles.
 #include "fuzz_common.h"
 
 #include "comparisons/io/obj_mesh.h"
@@ -14,6 +15,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   tecido::fuzz::expect_only_input_errors(kTarget, [&] {
     const tecido::io::ObjMesh m = tecido::io::parse_obj_text(text, "fuzz.obj");
     if (m.triangles.empty()) tecido::fuzz::finding(kTarget, "accepted a mesh without triangles");
+    if (m.vertices.size() > tecido::io::kMaxMeshVertices || m.triangles.size() > tecido::io::kMaxMeshTriangles)
+      tecido::fuzz::finding(kTarget, "accepted a mesh past the limits");
     if (m.triangle_line.size() != m.triangles.size()) tecido::fuzz::finding(kTarget, "triangle_line size differs");
     const auto nv = static_cast<long long>(m.vertices.size());
     for (const auto& v : m.vertices)

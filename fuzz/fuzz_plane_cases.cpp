@@ -1,5 +1,6 @@
 // libFuzzer target: bytes -> io::parse_json_text -> io::plane_cases_from_json (the cases file of
-// `tecido plane`). Rejections must be io::InputError; accepted cases must be finite, with a
+// `tecido plane`). Rejections must be io::InputError; accepted cases must have distinct ids and
+// nesting within the limit, and must be finite, with a
 // unit normal and forward and non-negative half extents, and must survive the writer's round
 // trip (plane_cases_to_json -> plane_cases_from_json gives the same points and extents).
 // make_bounded_plane keeps orthonormal input as given and orthogonalises twice otherwise, so the
@@ -26,8 +27,9 @@ bool same(const tecido::io::PlaneCase& a, const tecido::io::PlaneCase& b) {
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string text = tecido::fuzz::as_text(data, size);
   tecido::fuzz::expect_only_input_errors(kTarget, [&] {
-    const auto doc = tecido::io::parse_json_text(text, "fuzz.json");
+    const auto doc = tecido::fuzz::parse_checked(kTarget, text);
     const auto cases = tecido::io::plane_cases_from_json(doc, "fuzz.json");
+    tecido::fuzz::expect_unique_ids(kTarget, cases);
     for (const auto& c : cases) {
       const auto& p = c.plane;
       if (!c.from.allFinite() || !c.to.allFinite() || !p.position.allFinite() || !p.normal.allFinite() ||

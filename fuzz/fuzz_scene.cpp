@@ -1,10 +1,12 @@
 // libFuzzer target: bytes -> io::parse_json_text -> io::scene_from_json (the path of every
 // `tecido run SCENE`). Rejections must be io::InputError. A scene the reader accepts must keep
-// its promises (indices in range, finite state, positive step) and, when small, must survive a
+// its promises (indices in range, finite state, positive step, sizes within the limits of
+// comparisons/io/limits.h, nesting within io::kMaxJsonDepth) and, when small, must survive a
 // few simulation steps with its self-collision hook, as `tecido run` would run it: a state
 // that stops being finite is reported as "unstable", never a crash.
 #include "fuzz_common.h"
 
+#include "comparisons/io/limits.h"
 #include "comparisons/io/run_result.h"
 #include "comparisons/io/scene_json.h"
 #include "core/cloth/self_collision_response.h"
@@ -42,9 +44,22 @@ void check_invariants(const tecido::Scene& s) {
   for (const auto& t : s.triangles)
     for (int k : t)
       if (k < 0 || k >= n) finding(kTarget, "triangle index out of range");
+  if (s.particles.size() > tecido::io::kMaxParticles || s.forces.springs.size() > tecido::io::kMaxSprings ||
+      s.planes.size() > tecido::io::kMaxPlanes || s.triangles.size() > tecido::io::kMaxTriangles)
+    finding(kTarget, "accepted a scene past the limits of comparisons/io/limits.h");
   for (const auto& pl : s.planes)
     if (!pl.position.allFinite() || !pl.normal.allFinite() || !pl.forward.allFinite() || !pl.half_extents.allFinite())
       finding(kTarget, "accepted a non-finite plane");
+}
+
+/// A cloth of more than 2^16 nodes that the reader would accept and build.
+bool large_cloth(const tecido::io::Json& doc) {
+  if (!doc.is_object() || !doc.contains("cloth") || !doc["cloth"].is_object()) return false;
+  const auto& c = doc["cloth"];
+  if (!c.contains("rows") || !c.contains("cols") || !c["rows"].is_number() || !c["cols"].is_number()) return false;
+  const double rows = c["rows"].get<double>(), cols = c["cols"].get<double>();
+  return rows * cols > 65536.0 && rows * cols <= static_cast<double>(tecido::io::kMaxClothNodes) &&
+         rows <= tecido::io::kMaxClothSide && cols <= tecido::io::kMaxClothSide;
 }
 
 }  // namespace
@@ -52,7 +67,11 @@ void check_invariants(const tecido::Scene& s) {
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string text = tecido::fuzz::as_text(data, size);
   tecido::fuzz::expect_only_input_errors(kTarget, [&] {
-    const tecido::io::Json doc = tecido::io::parse_json_text(text, "fuzz.json");
+    const tecido::io::Json doc = tecido::fuzz::parse_checked(kTarget, text);
+    // A cloth is as large as it says (the memory of the scene it describes, up to the limit of
+    // 2^20 nodes, is legitimate): large ones are not built here, so that -rss_limit_mb measures
+    // the reader, not the scene. Sides past the limit still go to the reader, which rejects them.
+    if (large_cloth(doc)) return;
     const tecido::Scene scene = tecido::io::scene_from_json(doc, "fuzz.json");
     check_invariants(scene);
     // Simulate a few steps of small scenes (big ones would only measure the allocator).

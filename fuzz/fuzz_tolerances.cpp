@@ -68,7 +68,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const std::string text = tecido::fuzz::as_text(data, size);
   // The constructor from an already-parsed document (no validation of its own).
   tecido::fuzz::expect_only_input_errors(kTarget, [&] {
-    const tecido::io::Json doc = tecido::io::parse_json_text(text, "fuzz.json");
+    const tecido::io::Json doc = tecido::fuzz::parse_checked(kTarget, text);
     const tecido::suites::Tolerances tol(doc, "fuzz.json");
     ask_everything(tol, doc, false);
   });

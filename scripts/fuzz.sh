@@ -1,11 +1,14 @@
 #!/usr/bin/env bash
 # Builds the libFuzzer targets of fuzz/ (clang, -fsanitize=fuzzer,address,undefined) in
-# build-fuzz/ and runs each for SECONDS seconds (default 10; about a minute for all six).
+# build-fuzz/ and runs each for SECONDS seconds (default 10; about a minute and a half for all).
 #   bash scripts/fuzz.sh [SECONDS] [TARGET...]      (or TECIDO_FUZZ_SECONDS=SECONDS)
 # Each target starts from a copy of its seed corpus data/fuzz/<target>/ (data/ is never
 # written) in build-fuzz/corpus/<target>/, which keeps what the fuzzer finds between runs.
 # A crash, leak, UBSan report, timeout or out-of-memory is saved under
 # build-fuzz/artifacts/<target>/ and makes the script exit 1 after running every target.
+# Bounded work is part of the check: inputs up to MAX_LEN bytes (far past the nesting limit of
+# comparisons/io/limits.h) must each run within TIMEOUT seconds and RSS_MB of memory, which a
+# reader linear in its input meets with a wide margin and a quadratic one does not.
 # Reproduce one with: build-fuzz/bin/<target> build-fuzz/artifacts/<target>/crash-<sha1>
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -24,6 +27,13 @@ CC=clang CXX=clang++ cmake -S . -B "$BUILD" "${GEN[@]}" -DCMAKE_BUILD_TYPE=RelWi
 cmake --build "$BUILD" --target fuzz -j "$JOBS"
 if [ $# -gt 0 ]; then TARGETS=("$@"); else mapfile -t TARGETS < "$BUILD/fuzz_targets.txt"; fi
 
+MAX_LEN=${MAX_LEN:-262144} TIMEOUT=${TIMEOUT:-5} RSS_MB=${RSS_MB:-1024}
+DEPTH=$(sed -n 's/.*kMaxJsonDepth = \([0-9]*\);.*/\1/p' comparisons/io/limits.h)
+if [ -z "$DEPTH" ] || [ "$MAX_LEN" -le $((4 * DEPTH + 64)) ]; then
+  echo "fuzz: -max_len=$MAX_LEN cannot reach past the nesting limit ($DEPTH levels)" >&2
+  exit 2
+fi
+
 export ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1:abort_on_error=1:allocator_may_return_null=1}
 export UBSAN_OPTIONS=${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}
 failed=()
@@ -35,13 +45,16 @@ for t in "${TARGETS[@]}"; do
   dict=()
   case "$t" in
     fuzz_obj) dict=(-dict=data/fuzz/obj.dict) ;;
+    fuzz_options) dict=(-dict=data/fuzz/options.dict) ;;
     fuzz_tritri_vs_exact) ;;
     *) dict=(-dict=data/fuzz/json.dict) ;;
   esac
   echo "fuzz: $t for ${SECS} s (corpus $corpus)" >&2
-  if "$BUILD/bin/$t" "$corpus" "${dict[@]}" -max_total_time="$SECS" -timeout=10 -rss_limit_mb=2048 \
-      -max_len=16384 -artifact_prefix="$artifacts/" -print_final_stats=1 >"$BUILD/artifacts/$t.log" 2>&1; then
-    grep -E '^stat::number_of_executed_units|^Done' "$BUILD/artifacts/$t.log" | tr '\n' ' ' >&2; echo >&2
+  if "$BUILD/bin/$t" "$corpus" "${dict[@]}" -max_total_time="$SECS" -timeout="$TIMEOUT" -rss_limit_mb="$RSS_MB" \
+      -malloc_limit_mb="$RSS_MB" -max_len="$MAX_LEN" -artifact_prefix="$artifacts/" -print_final_stats=1 \
+      >"$BUILD/artifacts/$t.log" 2>&1; then
+    grep -E '^stat::(number_of_executed_units|peak_rss_mb|slowest_unit_time_sec)|^Done' "$BUILD/artifacts/$t.log" | tr '\n' ' ' >&2
+    echo >&2
   else
     echo "fuzz: $t FAILED; log $BUILD/artifacts/$t.log, input:" >&2
     grep -E 'Test unit written to|FINDING|ERROR|SUMMARY' "$BUILD/artifacts/$t.log" | head -5 >&2

@@ -8,7 +8,9 @@
 // Inconsistent shards (a different n, a shard given twice or missing, a case twice or missing,
 // other settings, the two kinds mixed): one line, exit 2, nothing written.
 #include "comparisons/cli/commands.h"
+#include "comparisons/cli/option_checks.h"
 #include "comparisons/io/atomic_file.h"
+#include "comparisons/io/output_dir.h"
 #include "comparisons/io/gnuplot.h"
 #include "comparisons/io/input_error.h"
 #include "comparisons/io/json_reader.h"
@@ -98,11 +100,14 @@ Command add_merge(CLI::App& app) {
   CLI::App* sub = app.add_subcommand(
       "merge", "Join the shards of `experiment self-contact --shard i/n` or `suite NAME... --shard i/n` into one result");
   sub->add_option("dirs", o->dirs, "The shards' output directories (or their experiment.json / shard.json files)")
-      ->required();
+      ->required()
+      ->check(non_empty());
   sub->add_option("--out", o->out, "Output directory (experiment.json and .md, or report.json, report.md and plots)")
-      ->required();
+      ->required()
+      ->check(non_empty());
   sub->add_option("--seed-table", o->seed_table,
-                  "Experiment shards: the seed's tables (default: the path recorded in the shards)");
+                  "Experiment shards: the seed's tables (default: the path recorded in the shards)")
+      ->check(non_empty());
   return [o]() {
     std::vector<std::string> files;
     for (const auto& d : o->dirs) files.push_back(shard_file(d));
@@ -118,8 +123,9 @@ Command add_merge(CLI::App& app) {
                                                files[0] + " is " + (suite_kind ? "a suite" : "an experiment") +
                                                " shard: merge one kind at a time");
     }
+    if (suite_kind && !o->seed_table.empty()) throw io::UsageError("--seed-table: applies to experiment shards only");
+    io::check_output_dir(o->out);
     if (suite_kind) {
-      if (!o->seed_table.empty()) throw io::UsageError("--seed-table applies to experiment shards only");
       return merge_suites(files, o->out);
     }
     return merge_experiment(files, o->out, o->seed_table);

@@ -3,6 +3,7 @@
 #include "comparisons/cli/commands.h"
 #include "comparisons/cli/outside_options.h"
 #include "comparisons/engines/run_engines.h"
+#include "comparisons/cli/option_checks.h"
 #include "comparisons/engines/segment_plane_engines.h"
 #include "comparisons/io/plane_cases.h"
 
@@ -23,7 +24,7 @@ Command add_plane(CLI::App& app) {
   std::string all;
   for (const auto& e : segment_plane_engines()) all += (all.empty() ? "" : ",") + e.name;
   CLI::App* sub = app.add_subcommand("plane", "Segment vs bounded plane: hit and crossing fraction per engine");
-  sub->add_option("--cases", o->cases, "Cases file {\"cases\":[{\"id\",\"plane\",\"from\",\"to\"}]}")->required();
+  sub->add_option("--cases", o->cases, "Cases file {\"cases\":[{\"id\",\"plane\",\"from\",\"to\"}]}")->required()->check(non_empty());
   sub->add_option("--engines", o->engines,
                   "Comma-separated engines (" + all + ", and outside engines by name; default: every one)");
   sub->add_flag("--json", o->json, "Print JSON (the only output format; kept for the contract)");

@@ -3,6 +3,7 @@
 #include "comparisons/cli/commands.h"
 #include "comparisons/cli/outside_options.h"
 #include "comparisons/engines/run_engines.h"
+#include "comparisons/cli/option_checks.h"
 #include "comparisons/engines/tri_tri_engines.h"
 #include "comparisons/io/tri_pairs.h"
 
@@ -23,7 +24,7 @@ Command add_tritri(CLI::App& app) {
   std::string all;
   for (const auto& e : tri_tri_engines()) all += (all.empty() ? "" : ",") + e.name;
   CLI::App* sub = app.add_subcommand("tritri", "Triangle-triangle intersection per engine (closed triangles)");
-  sub->add_option("--pairs", o->pairs, "Pairs file {\"pairs\":[{\"id\",\"a\":[[..]x3],\"b\":[[..]x3]}]}")->required();
+  sub->add_option("--pairs", o->pairs, "Pairs file {\"pairs\":[{\"id\",\"a\":[[..]x3],\"b\":[[..]x3]}]}")->required()->check(non_empty());
   sub->add_option("--engines", o->engines,
                   "Comma-separated engines (" + all + ", and outside engines by name; default: every one)");
   sub->add_flag("--json", o->json, "Print JSON (the only output format; kept for the contract)");

@@ -25,7 +25,8 @@ struct CommandRegistrar {
 #define TECIDO_REGISTER_COMMAND(name, factory) \
   static const ::tecido::cli::CommandRegistrar tecido_registrar_##name(#name, &factory)
 
-/// Splits "a,b,c" and checks each name against `known`; throws io::UsageError on an unknown one.
+/// Splits "a,b,c" and checks each name against `known`; throws io::UsageError naming --engines on
+/// an unknown one or an empty list.
 std::vector<std::string> parse_engine_list(const std::string& list, const std::vector<std::string>& known,
                                            const std::string& what);
 

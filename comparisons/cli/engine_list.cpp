@@ -17,11 +17,13 @@ std::vector<std::string> parse_engine_list(const std::string& list, const std::v
     if (!ok) {
       std::string all;
       for (const auto& k : known) all += (all.empty() ? "" : ", ") + k;
-      throw io::UsageError("unknown " + what + " engine \"" + name + "\" (known: " + all + ")");
+      throw io::UsageError("--engines: unknown " + what + " engine \"" + name + "\" (known: " + all + ")");
     }
+    for (const auto& prev : out)
+      if (prev == name) throw io::UsageError("--engines: \"" + name + "\" is named twice");
     out.push_back(name);
   }
-  if (out.empty()) throw io::UsageError("no " + what + " engine given");
+  if (out.empty()) throw io::UsageError("--engines: no " + what + " engine given");
   return out;
 }
 

@@ -1,54 +1,87 @@
-// tecido: the command line. Exit codes: 0 ok, 1 a tolerance check failed, 2 bad usage or bad
-// input (one line on stderr naming file, JSON path and problem).
-#include "comparisons/cli/commands.h"
+// tecido: the command line. Exit codes: 0 ok, 1 a tolerance check failed, 2 bad usage, bad input
+// or an output that cannot be written (one line on stderr naming the option, the file and JSON
+// pointer, or the path, and the problem), 3 an internal error.
+#include "comparisons/cli/app.h"
+#include "comparisons/cli/error_line.h"
 #include "comparisons/io/input_error.h"
+#include "comparisons/io/output_error.h"
 
-#include <iostream>
 #include <algorithm>
+#include <cerrno>
+#include <csignal>
+#include <cstring>
+#include <filesystem>
+#include <iostream>
 #include <map>
+#include <new>
 
 namespace tecido::cli {
-std::vector<std::pair<std::string, CommandFactory>>& command_registry() {
-  static std::vector<std::pair<std::string, CommandFactory>> registry;
-  return registry;
-}
-}  // namespace tecido::cli
+namespace {
 
-int main(int argc, char** argv) {
-  CLI::App app{"tecido: a validation harness for cloth and particle physics"};
-  app.require_subcommand(1);
-  app.set_help_all_flag("--help-all", "Show help for every subcommand");
-  std::map<CLI::App*, tecido::cli::Command> commands;
-  auto add = [&](tecido::cli::Command (*f)(CLI::App&)) {
-    const std::size_t before = app.get_subcommands({}).size();
-    tecido::cli::Command c = f(app);
-    commands[app.get_subcommands({})[before]] = std::move(c);
-  };
-  auto registry = tecido::cli::command_registry();
-  std::sort(registry.begin(), registry.end());
-  for (const auto& entry : registry) add(entry.second);
+/// Runs the parsed subcommand, turning every error into its one line and exit code.
+int run_parsed(const std::map<CLI::App*, Command>& commands) {
   try {
-    app.parse(argc, argv);
-  } catch (const CLI::CallForHelp& e) {
-    return app.exit(e);
-  } catch (const CLI::CallForAllHelp& e) {
-    return app.exit(e);
-  } catch (const CLI::ParseError& e) {
-    std::cerr << "tecido: " << e.what() << " (see --help)\n";
-    return 2;
-  }
-  try {
-    for (auto& [sub, run] : commands)
+    for (const auto& [sub, run] : commands)
       if (sub->parsed()) return run();
-  } catch (const tecido::io::InputError& e) {
-    std::cerr << "tecido: " << e.what() << "\n";
+  } catch (const io::InputError& e) {
+    report_error(std::cerr, e.what());
     return 2;
-  } catch (const tecido::io::UsageError& e) {
-    std::cerr << "tecido: " << e.what() << "\n";
+  } catch (const io::UsageError& e) {
+    report_error(std::cerr, e.what());
     return 2;
+  } catch (const io::OutputError& e) {
+    report_error(std::cerr, e.what());
+    return 2;
+  } catch (const std::filesystem::filesystem_error& e) {
+    // A writer that reached the file system directly: still a path that cannot be written.
+    report_error(std::cerr, e.path1().string() + ": " + e.code().message());
+    return 2;
+  } catch (const std::bad_alloc&) {
+    report_error(std::cerr, "error: out of memory");
+    return 3;
   } catch (const std::exception& e) {
-    std::cerr << "tecido: error: " << e.what() << "\n";
+    report_error(std::cerr, std::string("error: ") + e.what());
     return 3;
   }
   return 2;
+}
+
+/// stdout is an output like any file: a failed write (a full disk, a closed pipe) is exit 2.
+int check_stdout(int code) {
+  errno = 0;
+  std::cout.flush();
+  if (std::cout.good()) return code;
+  const int e = errno;
+  report_error(std::cerr, std::string("stdout: cannot write") + (e ? std::string(": ") + std::strerror(e) : ""));
+  return 2;
+}
+
+}  // namespace
+}  // namespace tecido::cli
+
+int main(int argc, char** argv) {
+  // A file-size limit (ulimit -f) then shows as a failed write, reported like a full disk.
+  std::signal(SIGXFSZ, SIG_IGN);
+  const auto names = tecido::cli::command_names();
+  if (argc > 1 && argv[1][0] != '-' && std::find(names.begin(), names.end(), argv[1]) == names.end()) {
+    std::string known;
+    for (const auto& n : names) known += (known.empty() ? "" : ", ") + n;
+    tecido::cli::report_error(std::cerr, "unknown command \"" + std::string(argv[1]) + "\" (known: " + known + "; see --help)");
+    return 2;
+  }
+  const auto cl = tecido::cli::make_command_line();
+  try {
+    cl->app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return tecido::cli::check_stdout(cl->app.exit(e));
+  } catch (const CLI::CallForAllHelp& e) {
+    return tecido::cli::check_stdout(cl->app.exit(e));
+  } catch (const CLI::ValidationError& e) {
+    tecido::cli::report_error(std::cerr, e.what());  // already "--option: problem"
+    return 2;
+  } catch (const CLI::ParseError& e) {
+    tecido::cli::report_error(std::cerr, std::string(e.what()) + " (see --help)");
+    return 2;
+  }
+  return tecido::cli::check_stdout(tecido::cli::run_parsed(cl->commands));
 }

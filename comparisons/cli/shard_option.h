@@ -5,7 +5,8 @@
 
 namespace tecido::cli {
 
-/// "i/n" -> (i, n) with 0 <= i < n; throws io::UsageError otherwise.
+/// "i/n" -> (i, n) with 0 <= i < n <= io::kMaxShards (decimal digits only); throws
+/// io::UsageError naming --shard otherwise.
 std::pair<int, int> parse_shard(const std::string& text);
 
 }  // namespace tecido::cli

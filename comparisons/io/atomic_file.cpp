@@ -1,34 +1,83 @@
 #include "comparisons/io/atomic_file.h"
 
+#include "comparisons/io/output_dir.h"
+#include "comparisons/io/output_error.h"
+
+#include <atomic>
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
+#include <fcntl.h>
 #include <filesystem>
-#include <fstream>
-#include <stdexcept>
 #include <unistd.h>
 
 namespace tecido::io {
 
-void write_file_atomic(const std::string& path, const std::string& content) {
-  namespace fs = std::filesystem;
-  const fs::path target(path);
-  if (target.has_parent_path()) fs::create_directories(target.parent_path());
-  const fs::path tmp = target.string() + ".tmp." + std::to_string(::getpid());
-  {
-    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-    if (!out) throw std::runtime_error("cannot write " + tmp.string());
-    out << content;
-    out.flush();
-    if (!out) {
-      out.close();
-      std::remove(tmp.c_str());
-      throw std::runtime_error("write failed for " + tmp.string());
+namespace {
+
+std::string errno_text(const char* what) { return std::string(what) + ": " + std::strerror(errno); }
+
+/// Writes every byte to fd; false (errno set) on the first failed write.
+bool write_all(int fd, const std::string& content) {
+  const char* p = content.data();
+  std::size_t left = content.size();
+  while (left > 0) {
+    const ssize_t n = ::write(fd, p, left);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) {
+      if (n == 0) errno = EIO;
+      return false;
     }
+    p += n;
+    left -= static_cast<std::size_t>(n);
   }
-  std::error_code ec;
-  fs::rename(tmp, target, ec);
-  if (ec) {
-    std::remove(tmp.c_str());
-    throw std::runtime_error("cannot rename " + tmp.string() + " to " + path + ": " + ec.message());
+  return true;
+}
+
+/// Creates a new file beside `target` (O_EXCL: never someone else's) and returns its fd and name.
+int create_temp_beside(const std::string& target, std::string& name) {
+  static std::atomic<unsigned> counter{0};
+  for (;;) {
+    name = target + ".tmp." + std::to_string(::getpid()) + "." + std::to_string(counter.fetch_add(1));
+    const int fd = ::open(name.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+    if (fd >= 0 || errno != EEXIST) return fd;
+  }
+}
+
+/// Writes every byte to fd and closes it; OutputError naming `path` if a write or the close
+/// fails (a full disk may show only at the close).
+void write_and_close(int fd, const std::string& path, const std::string& content) {
+  const bool written = write_all(fd, content);
+  const int write_errno = errno;
+  const bool closed = ::close(fd) == 0;
+  if (!written) errno = write_errno;
+  if (!written || !closed) throw OutputError(path, errno_text("cannot write"));
+}
+
+}  // namespace
+
+void write_whole_file(const std::string& path, const std::string& content) {
+  const int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
+  if (fd < 0) throw OutputError(path, errno_text("cannot open for writing"));
+  write_and_close(fd, path, content);
+}
+
+void write_file_atomic(const std::string& path, const std::string& content) {
+  const std::filesystem::path target(path);
+  if (target.has_parent_path()) create_output_directories(target.parent_path().string());
+  std::string tmp;
+  const int fd = create_temp_beside(path, tmp);
+  if (fd < 0) throw OutputError(path, errno_text("cannot create a file"));
+  try {
+    write_and_close(fd, path, content);
+  } catch (...) {
+    ::unlink(tmp.c_str());
+    throw;
+  }
+  if (std::rename(tmp.c_str(), path.c_str()) != 0) {
+    const std::string problem = errno_text("cannot replace the file");
+    ::unlink(tmp.c_str());
+    throw OutputError(path, problem);
   }
 }
 

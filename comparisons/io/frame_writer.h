@@ -5,7 +5,8 @@
 ///    file is a point cloud (vertices only).
 ///  - VTK: ASCII legacy "POLYDATA" with POINTS, POLYGONS (or VERTICES when there is no triangle)
 ///    and the particle velocities as POINT_DATA VECTORS "velocity" (ParaView, VisIt).
-/// Files are DIR/frame_<step, 6 digits>.obj|.vtk, each written atomically. Positions are printed
+/// Files are DIR/frame_<step, 6 digits>.obj|.vtk, each written atomically (a file that cannot be
+/// written is an io::OutputError naming it). Positions are printed
 /// with 9 significant digits (enough to view, not to restart a run: result.json has 17).
 #include "core/geometry/types.h"
 

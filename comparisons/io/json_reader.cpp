@@ -1,10 +1,9 @@
 #include "comparisons/io/json_reader.h"
 
+#include "comparisons/io/limits.h"
 #include "comparisons/io/text_file.h"
 
 #include <cmath>
-#include <filesystem>
-#include <fstream>
 #include <set>
 #include <sstream>
 #include <vector>
@@ -37,76 +36,112 @@ std::string escape(const std::string& key) {
   return out;
 }
 
-struct DuplicateKey {
+/// Thrown from the SAX handler; turned into an InputError once the parser has unwound.
+struct Rejected {
   std::string where;
-  std::string key;
+  std::string problem;
 };
+
+/// What the handler keeps per open array or object: O(1) besides the object's keys, so that
+/// tracking costs time and memory linear in the text (the JSON pointer of a level is built only
+/// when an error is reported).
+struct Level {
+  bool is_object = false;
+  std::size_t index = 0;        ///< arrays: the index of the next element
+  std::set<std::string> keys;   ///< objects: keys seen so far (duplicates are errors)
+  std::string last_key;         ///< objects: the key of the value being parsed
+};
+
+/// The JSON pointer of the value being parsed: the path through the first `levels` open levels.
+std::string pointer_of(const std::vector<Level>& stack, std::size_t levels) {
+  std::string where;
+  for (std::size_t k = 0; k < levels; ++k)
+    where = stack[k].is_object ? child(where, stack[k].last_key) : child(where, stack[k].index);
+  return where;
+}
+
+/// nlohmann::json's SAX events, checked, then handed to its own document builder: nesting past
+/// kMaxJsonDepth is rejected at its first level and duplicate keys at the second (nlohmann::json
+/// would keep the last value silently). Not the parser callback: in this nlohmann::json (3.11)
+/// it scans the enclosing container at every object's end, quadratic in an array of objects.
+class StrictSax {
+ public:
+  using Builder = nlohmann::detail::json_sax_dom_parser<Json>;
+  explicit StrictSax(Json& result) : dom_(result, /*allow_exceptions=*/true) {}
+
+  bool null() { return scalar(dom_.null()); }
+  bool boolean(bool b) { return scalar(dom_.boolean(b)); }
+  bool number_integer(Json::number_integer_t x) { return scalar(dom_.number_integer(x)); }
+  bool number_unsigned(Json::number_unsigned_t x) { return scalar(dom_.number_unsigned(x)); }
+  bool number_float(Json::number_float_t x, const Json::string_t& text) { return scalar(dom_.number_float(x, text)); }
+  bool string(Json::string_t& s) { return scalar(dom_.string(s)); }
+  bool binary(Json::binary_t& b) { return scalar(dom_.binary(b)); }
+  bool start_object(std::size_t n) { return open(true) && dom_.start_object(n); }
+  bool start_array(std::size_t n) { return open(false) && dom_.start_array(n); }
+  bool end_object() { return close() && dom_.end_object(); }
+  bool end_array() { return close() && dom_.end_array(); }
+  bool key(Json::string_t& k) {
+    Level& level = stack_.back();
+    if (!level.keys.insert(k).second) throw Rejected{pointer_of(stack_, stack_.size() - 1), "duplicate key \"" + k + "\""};
+    level.last_key = k;
+    return dom_.key(k);
+  }
+  template <class Exception>
+  bool parse_error(std::size_t pos, const std::string& token, const Exception& e) {
+    return dom_.parse_error(pos, token, e);  // throws e
+  }
+
+  /// The pointer of the value being parsed (for the parser's own errors too).
+  std::string pointer() const { return pointer_of(stack_, stack_.size()); }
+
+ private:
+  bool open(bool is_object) {
+    if (stack_.size() >= static_cast<std::size_t>(kMaxJsonDepth))
+      throw Rejected{pointer(), "nesting deeper than " + std::to_string(kMaxJsonDepth) + " levels (the limit)"};
+    stack_.push_back(Level{is_object, 0, {}, {}});
+    return true;
+  }
+  bool close() {
+    stack_.pop_back();
+    return scalar(true);
+  }
+  /// A complete value: the enclosing array moves on to its next index.
+  bool scalar(bool ok) {
+    if (!stack_.empty() && !stack_.back().is_object) ++stack_.back().index;
+    return ok;
+  }
+
+  Builder dom_;
+  std::vector<Level> stack_;
+};
+
+/// nlohmann's messages look like "[json.exception.parse_error.101] parse error at line 1, ...":
+/// the part from `marker` on.
+std::string from_marker(const std::string& what, const char* marker) {
+  const auto pos = what.find(marker);
+  return pos == std::string::npos ? what : what.substr(pos);
+}
 }  // namespace
 
 std::string child(const std::string& where, const std::string& key) { return where + "/" + escape(key); }
 std::string child(const std::string& where, std::size_t index) { return where + "/" + std::to_string(index); }
 
 Json parse_json_text(const std::string& text, const std::string& file) {
-  // Track the keys of each open object (and the JSON pointer to it) to reject duplicates, which
-  // nlohmann::json would otherwise resolve silently to the last value.
-  struct Frame {
-    std::string where;
-    bool is_object;
-    std::size_t index = 0;
-    std::set<std::string> keys;
-    std::string last_key;
-  };
-  std::vector<Frame> stack;
-  auto current_child = [&]() -> std::string {
-    if (stack.empty()) return "";
-    Frame& f = stack.back();
-    return f.is_object ? child(f.where, f.last_key) : child(f.where, f.index);
-  };
-  auto cb = [&](int, Json::parse_event_t ev, Json& parsed) -> bool {
-    switch (ev) {
-      case Json::parse_event_t::object_start:
-      case Json::parse_event_t::array_start: {
-        std::string where = current_child();
-        stack.push_back(Frame{where, ev == Json::parse_event_t::object_start, 0, {}, {}});
-        break;
-      }
-      case Json::parse_event_t::key: {
-        Frame& f = stack.back();
-        const std::string k = parsed.get<std::string>();
-        if (!f.keys.insert(k).second) throw DuplicateKey{f.where, k};
-        f.last_key = k;
-        break;
-      }
-      case Json::parse_event_t::object_end:
-      case Json::parse_event_t::array_end:
-        stack.pop_back();
-        if (!stack.empty() && !stack.back().is_object) ++stack.back().index;
-        break;
-      case Json::parse_event_t::value:
-        if (!stack.empty() && !stack.back().is_object) ++stack.back().index;
-        break;
-    }
-    return true;
-  };
   if (text.find_first_not_of(" \t\r\n") == std::string::npos) throw InputError(file, "", "empty file, expected JSON");
+  Json result;
+  StrictSax strict(result);
   try {
-    return Json::parse(text, cb, /*allow_exceptions=*/true, /*ignore_comments=*/false);
-  } catch (const DuplicateKey& d) {
-    throw InputError(file, d.where, "duplicate key \"" + d.key + "\"");
+    Json::sax_parse(text, &strict, Json::input_format_t::json, /*strict=*/true, /*ignore_comments=*/false);
+    return result;
+  } catch (const Rejected& r) {
+    throw InputError(file, r.where, r.problem);
   } catch (const Json::parse_error& e) {
-    std::string msg = e.what();
-    // nlohmann messages look like "[json.exception.parse_error.101] parse error at line 1, column 5: ...".
-    const auto pos = msg.find("parse error");
-    if (pos != std::string::npos) msg = msg.substr(pos);
-    throw InputError(file, current_child(), "not valid JSON: " + msg);
+    throw InputError(file, strict.pointer(), "not valid JSON: " + from_marker(e.what(), "parse error"));
   } catch (const Json::out_of_range& e) {
     // nlohmann reports 1e400 and the like as "number overflow": name where it happened.
-    std::string msg = e.what();
-    const auto pos = msg.find("number overflow");
-    if (pos != std::string::npos) msg = msg.substr(pos);
-    throw InputError(file, current_child(), "number is not finite (" + msg + ")");
+    throw InputError(file, strict.pointer(), "number is not finite (" + from_marker(e.what(), "number overflow") + ")");
   } catch (const Json::exception& e) {
-    throw InputError(file, current_child(), std::string("not valid JSON: ") + e.what());
+    throw InputError(file, strict.pointer(), std::string("not valid JSON: ") + e.what());
   }
 }
 
@@ -192,6 +227,11 @@ Vec3 JsonReader::vec3(const Json& j, const std::string& where, double max_abs) c
 Vec2 JsonReader::vec2(const Json& j, const std::string& where, double max_abs) const {
   if (!j.is_array() || j.size() != 2) fail(where, "expected an array of 2 numbers");
   return Vec2(number(j[0], child(where, 0), max_abs), number(j[1], child(where, 1), max_abs));
+}
+
+void JsonReader::at_most(std::size_t count, const std::string& where, std::size_t limit, const std::string& what) const {
+  if (count > limit)
+    fail(where, std::to_string(count) + " " + what + ", more than the limit of " + std::to_string(limit));
 }
 
 void JsonReader::only_keys(const Json& obj, const std::string& where, std::initializer_list<const char*> known) const {

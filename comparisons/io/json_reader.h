@@ -1,7 +1,9 @@
 #pragma once
-/// Strict JSON reading shared by every reader (scenes, pairs, cases, tolerances): the file is
-/// parsed whole (a directory, a missing or unreadable file, malformed JSON and duplicate keys
-/// are errors), and typed accessors report the JSON pointer of the bad value.
+/// Strict JSON reading shared by every reader (scenes, pairs, cases, tolerances, shards): the file
+/// is parsed whole (a directory, a missing or unreadable file, malformed JSON, duplicate keys,
+/// a file over kMaxInputBytes and nesting deeper than kMaxJsonDepth are errors; see
+/// comparisons/io/limits.h), in time and memory linear in the text, and typed accessors report
+/// the JSON pointer of the bad value.
 #include "comparisons/io/input_error.h"
 #include "core/geometry/types.h"
 
@@ -16,7 +18,8 @@ using Json = nlohmann::json;
 
 /// Reads and parses a JSON file; throws InputError naming the file and the problem.
 Json read_json_file(const std::string& path);
-/// Parses JSON text (duplicate keys rejected); `file` is used in messages only.
+/// Parses JSON text (duplicate keys and nesting deeper than kMaxJsonDepth rejected while parsing,
+/// at the first offending key or level); `file` is used in messages only.
 Json parse_json_text(const std::string& text, const std::string& file);
 
 /// Typed access with the JSON pointer of each value, for error messages.
@@ -38,6 +41,10 @@ class JsonReader {
   std::string string(const Json& j, const std::string& where) const;
   Vec3 vec3(const Json& j, const std::string& where, double max_abs = 1e12) const;
   Vec2 vec2(const Json& j, const std::string& where, double max_abs = 1e12) const;
+
+  /// Fails at `where` when a list holds more than `limit` entries: "N particles, more than the
+  /// limit of L" (the limits of comparisons/io/limits.h).
+  void at_most(std::size_t count, const std::string& where, std::size_t limit, const std::string& what) const;
 
   /// Rejects keys of obj that are not in `known` (keys starting with '_' are comments).
   void only_keys(const Json& obj, const std::string& where, std::initializer_list<const char*> known) const;

@@ -1,107 +1,149 @@
 #include "comparisons/io/obj_mesh.h"
 
+#include "comparisons/io/input_error.h"
+#include "comparisons/io/limits.h"
 #include "comparisons/io/text_file.h"
 
-#include "comparisons/io/input_error.h"
-
+#include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
-#include <filesystem>
-#include <fstream>
-#include <sstream>
+#include <string_view>
+#include <unordered_set>
 
 namespace tecido::io {
 
 namespace {
 
-std::vector<std::string> split_ws(const std::string& line) {
-  std::vector<std::string> out;
-  std::istringstream ss(line);
-  std::string tok;
-  while (ss >> tok) out.push_back(tok);
-  return out;
+/// The whitespace-separated tokens of one line, one at a time (nothing is copied).
+class Tokens {
+ public:
+  explicit Tokens(std::string_view line) : rest_(line) {}
+  bool next(std::string_view& tok) {
+    const auto b = rest_.find_first_not_of(" \t\r\f\v");
+    if (b == std::string_view::npos) return false;
+    const auto e = rest_.find_first_of(" \t\r\f\v", b);
+    tok = rest_.substr(b, e == std::string_view::npos ? std::string_view::npos : e - b);
+    rest_ = e == std::string_view::npos ? std::string_view() : rest_.substr(e);
+    return true;
+  }
+
+ private:
+  std::string_view rest_;
+};
+
+[[noreturn]] void fail(const std::string& file, int line_no, const std::string& problem) {
+  throw InputError(file, "line " + std::to_string(line_no), problem);
+}
+
+/// The rest of a `v x y z [w]` line.
+Vec3 parse_vertex(Tokens& tokens, const std::string& file, int line_no) {
+  Vec3 p = Vec3::Zero();
+  std::string_view tok;
+  int k = 0;
+  for (; tokens.next(tok); ++k) {
+    if (k == 4) fail(file, line_no, "a vertex has at most four numbers (v x y z [w])");
+    const std::string s(tok);
+    char* end = nullptr;
+    const double d = std::strtod(s.c_str(), &end);
+    if (end == s.c_str() || *end != '\0') fail(file, line_no, "\"" + s + "\" is not a number");
+    if (!std::isfinite(d)) fail(file, line_no, std::string(k < 3 ? "coordinate" : "weight") + " \"" + s + "\" is not finite");
+    if (k < 3) p[k] = d;
+  }
+  if (k < 3) fail(file, line_no, "a vertex needs three coordinates (v x y z)");
+  return p;
+}
+
+/// One corner of a face (`i`, `i/t`, `i//n`, `i/t/n`): the 1-based index, a negative one
+/// resolved against the `vertices` read so far (positive ones may name later vertices).
+long long parse_corner(std::string_view tok, std::size_t vertices, const std::string& file, int line_no) {
+  const std::string s(tok.substr(0, tok.find('/')));
+  char* end = nullptr;
+  errno = 0;
+  const long long i = std::strtoll(s.c_str(), &end, 10);
+  if (s.empty() || end == s.c_str() || *end != '\0' || errno == ERANGE)
+    fail(file, line_no, "\"" + std::string(tok) + "\" is not a vertex index");
+  if (i == 0) fail(file, line_no, "vertex index 0 (OBJ indices start at 1)");
+  if (i > 0) return i;
+  const long long resolved = static_cast<long long>(vertices) + 1 + i;
+  if (resolved < 1)
+    fail(file, line_no, "vertex " + s + " names a missing vertex (only " + std::to_string(vertices) + " defined so far)");
+  return resolved;
+}
+
+/// Faces as read: every corner in one array, each face a range of it (the memory of the text).
+struct Faces {
+  std::vector<long long> corners;
+  std::vector<std::size_t> begin{0};
+  std::vector<int> line;
+  std::size_t triangles = 0;
+};
+
+/// The rest of an `f a b c ...` line, appended to `faces`; stops at the first corner past
+/// kMaxMeshTriangles. Linear in the corners (a repeated one is a degenerate face).
+void parse_face(Tokens& tokens, std::size_t vertices, Faces& faces, const std::string& file, int line_no) {
+  const auto start = static_cast<std::ptrdiff_t>(faces.begin.back());
+  std::unordered_set<long long> seen;  // past a few corners, where a linear search would make it quadratic
+  std::string_view tok;
+  std::size_t n = 0;
+  while (tokens.next(tok)) {
+    const long long c = parse_corner(tok, vertices, file, line_no);
+    const auto first = faces.corners.begin() + start, last = faces.corners.end();
+    if (n == 8) seen.insert(first, last);
+    const bool repeated = n < 8 ? std::find(first, last, c) != last : !seen.insert(c).second;
+    if (repeated) fail(file, line_no, "degenerate face: vertex " + std::to_string(c) + " is repeated");
+    if (++n >= 3 && ++faces.triangles > kMaxMeshTriangles)
+      fail(file, line_no, "more than " + std::to_string(kMaxMeshTriangles) + " triangles (the limit; a face of n corners is n - 2)");
+    faces.corners.push_back(c);
+  }
+  if (n < 3) fail(file, line_no, "a face needs at least three vertices");
+  faces.begin.push_back(faces.corners.size());
+  faces.line.push_back(line_no);
+}
+
+/// The faces' fans, once every vertex is known.
+void build_triangles(const Faces& faces, ObjMesh& mesh, const std::string& file) {
+  const long long nv = static_cast<long long>(mesh.vertices.size());
+  mesh.triangles.reserve(faces.triangles);
+  mesh.triangle_line.reserve(faces.triangles);
+  for (std::size_t f = 0; f + 1 < faces.begin.size(); ++f) {
+    const long long* c = faces.corners.data() + faces.begin[f];
+    const std::size_t n = faces.begin[f + 1] - faces.begin[f];
+    for (std::size_t k = 0; k < n; ++k)
+      if (c[k] > nv)
+        fail(file, faces.line[f], "face names missing vertex " + std::to_string(c[k]) + " (the file has " + std::to_string(nv) + " vertices)");
+    for (std::size_t k = 1; k + 1 < n; ++k) {
+      mesh.triangles.push_back({static_cast<int>(c[0] - 1), static_cast<int>(c[k] - 1), static_cast<int>(c[k + 1] - 1)});
+      mesh.triangle_line.push_back(faces.line[f]);
+    }
+  }
 }
 
 }  // namespace
 
 ObjMesh parse_obj_text(const std::string& text, const std::string& file) {
   ObjMesh mesh;
-  std::istringstream in(text);
-  std::string line;
+  Faces faces;
   int line_no = 0;
-  std::vector<std::vector<long long>> faces;  // resolved 1-based indices (may exceed count so far)
-  std::vector<int> face_line;
-  auto fail = [&](int ln, const std::string& problem) -> void {
-    throw InputError(file, "line " + std::to_string(ln), problem);
-  };
-  while (std::getline(in, line)) {
+  for (std::size_t pos = 0; pos < text.size();) {
+    const std::size_t eol = std::min(text.find('\n', pos), text.size());
+    std::string_view line(text.data() + pos, eol - pos);
+    pos = eol + 1;
     ++line_no;
-    if (!line.empty() && line.back() == '\r') line.pop_back();
-    const auto hash = line.find('#');
-    if (hash != std::string::npos) line.erase(hash);
-    const auto tok = split_ws(line);
-    if (tok.empty()) continue;
-    if (tok[0] == "v") {
-      if (tok.size() < 4) fail(line_no, "a vertex needs three coordinates (v x y z)");
-      if (tok.size() > 5) fail(line_no, "a vertex has at most four numbers (v x y z [w])");
-      Vec3 p;
-      for (int k = 0; k < 3; ++k) {
-        const std::string& s = tok[1 + k];
-        char* end = nullptr;
-        errno = 0;
-        const double d = std::strtod(s.c_str(), &end);
-        if (end == s.c_str() || *end != '\0') fail(line_no, "\"" + s + "\" is not a number");
-        if (!std::isfinite(d)) fail(line_no, "coordinate \"" + s + "\" is not finite");
-        p[k] = d;
-      }
-      if (tok.size() == 5) {
-        char* end = nullptr;
-        const double w = std::strtod(tok[4].c_str(), &end);
-        if (end == tok[4].c_str() || *end != '\0') fail(line_no, "\"" + tok[4] + "\" is not a number");
-        if (!std::isfinite(w)) fail(line_no, "weight \"" + tok[4] + "\" is not finite");
-      }
-      mesh.vertices.push_back(p);
-    } else if (tok[0] == "f") {
-      if (tok.size() < 4) fail(line_no, "a face needs at least three vertices");
-      std::vector<long long> idx;
-      for (std::size_t k = 1; k < tok.size(); ++k) {
-        const std::string s = tok[k].substr(0, tok[k].find('/'));
-        char* end = nullptr;
-        errno = 0;
-        const long long i = std::strtoll(s.c_str(), &end, 10);
-        if (s.empty() || end == s.c_str() || *end != '\0' || errno == ERANGE)
-          fail(line_no, "\"" + tok[k] + "\" is not a vertex index");
-        if (i == 0) fail(line_no, "vertex index 0 (OBJ indices start at 1)");
-        long long resolved = i;
-        if (i < 0) {
-          resolved = static_cast<long long>(mesh.vertices.size()) + 1 + i;
-          if (resolved < 1)
-            fail(line_no, "vertex " + s + " names a missing vertex (only " + std::to_string(mesh.vertices.size()) +
-                              " defined so far)");
-        }
-        for (long long prev : idx)
-          if (prev == resolved) fail(line_no, "degenerate face: vertex " + std::to_string(resolved) + " is repeated");
-        idx.push_back(resolved);
-      }
-      faces.push_back(std::move(idx));
-      face_line.push_back(line_no);
+    line = line.substr(0, line.find('#'));
+    Tokens tokens(line);
+    std::string_view record;
+    if (!tokens.next(record)) continue;
+    if (record == "v") {
+      if (mesh.vertices.size() == kMaxMeshVertices)
+        fail(file, line_no, "more than " + std::to_string(kMaxMeshVertices) + " vertices (the limit)");
+      mesh.vertices.push_back(parse_vertex(tokens, file, line_no));
+    } else if (record == "f") {
+      parse_face(tokens, mesh.vertices.size(), faces, file, line_no);
     }
   }
-  const long long nv = static_cast<long long>(mesh.vertices.size());
-  for (std::size_t f = 0; f < faces.size(); ++f) {
-    for (long long i : faces[f])
-      if (i > nv)
-        fail(face_line[f], "face names missing vertex " + std::to_string(i) + " (the file has " + std::to_string(nv) +
-                               " vertices)");
-    for (std::size_t k = 1; k + 1 < faces[f].size(); ++k) {
-      mesh.triangles.push_back({static_cast<int>(faces[f][0] - 1), static_cast<int>(faces[f][k] - 1),
-                                static_cast<int>(faces[f][k + 1] - 1)});
-      mesh.triangle_line.push_back(face_line[f]);
-    }
-  }
-  if (mesh.triangles.empty()) throw InputError(file, "line " + std::to_string(line_no > 0 ? line_no : 1), "the file has no face");
-  if (nv > 2000000000LL) throw InputError(file, "", "too many vertices");
+  build_triangles(faces, mesh, file);
+  if (mesh.triangles.empty()) fail(file, line_no > 0 ? line_no : 1, "the file has no face");
   return mesh;
 }
 

@@ -13,7 +13,9 @@
 /// Errors are io::InputError(file, "line N", problem): a face naming a missing vertex (index 0
 /// or beyond the vertex count), a repeated index in a face (degenerate face), fewer than three
 /// corners, a malformed or non-finite number, a vertex with fewer than three coordinates.
-/// A file with no face is an error too (there is nothing to test).
+/// A file with no face is an error too (there is nothing to test). At most io::kMaxMeshVertices
+/// vertices and io::kMaxMeshTriangles triangles (comparisons/io/limits.h), rejected at the first
+/// line past either; time and memory are linear in the text.
 #include "core/geometry/types.h"
 
 #include <array>

@@ -1,5 +1,8 @@
 #include "comparisons/io/plane_cases.h"
 
+#include "comparisons/io/entry_id.h"
+#include "comparisons/io/limits.h"
+
 #include "comparisons/io/plane_json.h"
 #include "comparisons/io/scene_json.h"
 
@@ -8,13 +11,15 @@ namespace tecido::io {
 std::vector<PlaneCase> plane_cases_from_json(const Json& doc, const std::string& file) {
   JsonReader r(file);
   const Json& cases = r.require_array(r.require(doc, "", "cases"), "/cases");
+  r.at_most(cases.size(), "/cases", kMaxCases, "cases");
+  UniqueIds ids;
   std::vector<PlaneCase> out;
   out.reserve(cases.size());
   for (std::size_t k = 0; k < cases.size(); ++k) {
     const std::string w = child("/cases", k);
     const Json& c = r.require_object(cases[k], w);
     PlaneCase pc;
-    pc.id = c.contains("id") ? (c["id"].is_string() ? c["id"].get<std::string>() : c["id"].dump()) : std::to_string(k);
+    pc.id = ids.read(r, c, w, k);
     pc.plane = read_bounded_plane(r, r.require(c, w, "plane"), child(w, "plane"), /*strict=*/false);
     pc.from = r.vec3(r.require(c, w, "from"), child(w, "from"), kMaxCoordinate);
     pc.to = r.vec3(r.require(c, w, "to"), child(w, "to"), kMaxCoordinate);

@@ -1,6 +1,8 @@
 #pragma once
 /// The cases file of `tecido plane` (docs/design.md section 3):
 /// {"cases":[{"id":"..","plane":{...},"from":[..],"to":[..]}, ...]}. Unknown keys are ignored.
+/// Ids are unique (an absent id is the case's index; comparisons/io/entry_id.h); at most
+/// kMaxCases cases.
 #include "comparisons/io/json_reader.h"
 #include "core/geometry/bounded_plane.h"
 

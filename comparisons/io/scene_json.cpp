@@ -45,14 +45,12 @@ ClothGridSpec read_cloth(const JsonReader& r, const Json& j, const std::string& 
   r.only_keys(j, w, {"rows", "cols", "spacing", "origin", "axis_u", "axis_v", "total_mass", "stiffness_b",
                      "stiffness_a", "damping", "elasticity", "pins"});
   ClothGridSpec c;
-  c.rows = static_cast<int>(r.integer(r.require(j, w, "rows"), child(w, "rows"), 2, 4096));
-  c.cols = static_cast<int>(r.integer(r.require(j, w, "cols"), child(w, "cols"), 2, 4096));
-  // About 6 springs and 2 triangles per node: 2^20 nodes take a few hundred MB; more would fail
-  // in the allocator (exit 3) minutes later instead of here.
-  constexpr long long kMaxClothNodes = 1LL << 20;
+  c.rows = static_cast<int>(r.integer(r.require(j, w, "rows"), child(w, "rows"), 2, kMaxClothSide));
+  c.cols = static_cast<int>(r.integer(r.require(j, w, "cols"), child(w, "cols"), 2, kMaxClothSide));
+  // Fewer than 8 springs and 2 triangles per node: 2^20 nodes take a few hundred MB.
   if (static_cast<long long>(c.rows) * c.cols > kMaxClothNodes)
     r.fail(child(w, "cols"), "rows x cols = " + std::to_string(static_cast<long long>(c.rows) * c.cols) +
-                                 " nodes exceeds the limit of " + std::to_string(kMaxClothNodes));
+                                 " nodes, more than the limit of " + std::to_string(kMaxClothNodes));
   c.spacing = r.number(r.require(j, w, "spacing"), child(w, "spacing"), 1e6);
   if (!(c.spacing > 0.0)) r.fail(child(w, "spacing"), "spacing must be > 0");
   c.origin = r.vec3(r.require(j, w, "origin"), child(w, "origin"), kMaxCoordinate);
@@ -83,25 +81,122 @@ ClothGridSpec read_cloth(const JsonReader& r, const Json& j, const std::string& 
   return c;
 }
 
-/// "self_collision": {"response": "none"|"gia"|"edge1"|"edge2"|"edge3"|"gia+edge3",
-///                    "strength": force per pushed particle [N] (>= 0; required unless "none"),
+/// "self_collision": {"detection": "discrete" (default) | "continuous",
+///                    "response": "none"|"gia"|"edge1"|"edge2"|"edge3"|"gia+edge3"|"impulse",
+///                    "strength": force per pushed particle [N] (>= 0; required by gia and the edge modes),
 ///                    "every": detect after every k-th step (integer >= 1, default 1)}
-/// Needs a cloth (the triangle mesh it tests). See core/cloth/self_collision_settings.h.
+/// "impulse" needs "detection": "continuous". Needs a cloth (the triangle mesh it tests).
+/// See core/cloth/self_collision_settings.h.
 SelfCollisionSettings read_self_collision(const JsonReader& r, const Json& j, const std::string& w) {
   r.require_object(j, w);
-  r.only_keys(j, w, {"response", "strength", "every"});
+  r.only_keys(j, w, {"detection", "response", "strength", "every"});
   SelfCollisionSettings sc;
+  if (j.contains("detection")) {
+    const std::string d = r.string(j["detection"], child(w, "detection"));
+    const auto det = parse_self_collision_detection(d);
+    if (!det) r.fail(child(w, "detection"), "unknown detection \"" + d + "\" (discrete, continuous)");
+    sc.detection = *det;
+  }
   const std::string name = r.string(r.require(j, w, "response"), child(w, "response"));
   const auto resp = parse_self_collision_response(name);
-  if (!resp) r.fail(child(w, "response"), "unknown response \"" + name + "\" (none, gia, edge1, edge2, edge3, gia+edge3)");
+  if (!resp)
+    r.fail(child(w, "response"), "unknown response \"" + name + "\" (none, gia, edge1, edge2, edge3, gia+edge3, impulse)");
   sc.response = *resp;
+  if (sc.response == SelfCollisionResponse::Impulse && sc.detection != SelfCollisionDetection::Continuous)
+    r.fail(child(w, "response"), "\"impulse\" needs \"detection\": \"continuous\" (a time of impact)");
+  const bool forced = sc.response != SelfCollisionResponse::None && sc.response != SelfCollisionResponse::Impulse;
   if (j.contains("strength")) {
     sc.strength = r.number_in(j["strength"], child(w, "strength"), 0.0, 1e9);
-  } else if (sc.response != SelfCollisionResponse::None) {
+  } else if (forced) {
     r.fail(child(w, "strength"), "missing required key (the response needs a force)");
   }
   if (j.contains("every")) sc.every = static_cast<int>(r.integer(j["every"], child(w, "every"), 1, 1000000000));
   return sc;
+}
+
+/// The lengths of the scene's lists, checked before any entry is read (the cloth's share is
+/// added where it is built).
+void check_list_sizes(const JsonReader& r, const Json& doc) {
+  if (doc.contains("particles"))
+    r.at_most(r.require_array(doc["particles"], "/particles").size(), "/particles", kMaxParticles, "particles");
+  if (doc.contains("springs"))
+    r.at_most(r.require_array(doc["springs"], "/springs").size(), "/springs", kMaxSprings, "springs");
+  if (doc.contains("planes")) r.at_most(r.require_array(doc["planes"], "/planes").size(), "/planes", kMaxPlanes, "planes");
+}
+
+void read_contact(const JsonReader& r, const Json& c, ContactSettings& contact) {
+  r.require_object(c, "/contact");
+  r.only_keys(c, "/contact", {"static_threshold", "tangential_threshold", "bisection_tolerance", "max_events_per_step"});
+  if (c.contains("static_threshold"))
+    contact.static_threshold = r.number_in(c["static_threshold"], "/contact/static_threshold", 0.0, 1e6);
+  if (c.contains("tangential_threshold"))
+    contact.tangential_threshold = r.number_in(c["tangential_threshold"], "/contact/tangential_threshold", 0.0, 1e6);
+  if (c.contains("bisection_tolerance")) {
+    contact.bisection_tolerance = r.number(c["bisection_tolerance"], "/contact/bisection_tolerance", kMaxDt);
+    if (!(contact.bisection_tolerance > 0.0)) r.fail("/contact/bisection_tolerance", "must be > 0");
+  }
+  if (c.contains("max_events_per_step"))
+    contact.max_events_per_step =
+        static_cast<int>(r.integer(c["max_events_per_step"], "/contact/max_events_per_step", 1, 1000000));
+}
+
+void read_particles(const JsonReader& r, const Json& ps, bool has_planes, Particles& particles) {
+  r.require_array(ps, "/particles");
+  for (std::size_t k = 0; k < ps.size(); ++k) {
+    const std::string w = child("/particles", k);
+    const Json& p = r.require_object(ps[k], w);
+    r.only_keys(p, w, {"position", "velocity", "mass", "pinned", "elasticity"});
+    const Vec3 x = r.vec3(r.require(p, w, "position"), child(w, "position"), kMaxCoordinate);
+    Vec3 v = Vec3::Zero();
+    if (p.contains("velocity")) v = r.vec3(p["velocity"], child(w, "velocity"), kMaxSpeed);
+    const bool pinned = p.contains("pinned") && r.boolean(p["pinned"], child(w, "pinned"));
+    double mass = 0.0;
+    if (!pinned || p.contains("mass")) {
+      mass = r.number(r.require(p, w, "mass"), child(w, "mass"), kMaxMass);
+      if (!(mass > 0.0)) r.fail(child(w, "mass"), "mass must be > 0 (a free particle needs a positive mass)");
+    }
+    double k_el = 1.0;
+    if (p.contains("elasticity")) {
+      k_el = r.number_in(p["elasticity"], child(w, "elasticity"), 0.0, 1.0);
+    } else if (has_planes && !pinned) {
+      r.fail(child(w, "elasticity"), "missing required key (the scene has planes)");
+    }
+    particles.add(x, v, mass, k_el, pinned);
+  }
+}
+
+/// Appends the cloth once its nodes fit beside the listed particles.
+void add_cloth(const JsonReader& r, const Json& j, Scene& s) {
+  const ClothGridSpec cloth = read_cloth(r, j, "/cloth");
+  const std::size_t nodes = static_cast<std::size_t>(cloth.rows) * static_cast<std::size_t>(cloth.cols);
+  r.at_most(s.particles.size() + nodes, "/cloth", kMaxParticles,
+            "particles (" + std::to_string(s.particles.size()) + " listed and " + std::to_string(nodes) + " of the cloth)");
+  append_cloth(s, cloth);
+}
+
+/// Appends the listed springs once they fit beside the cloth's.
+void read_springs(const JsonReader& r, const Json& ss, Scene& s) {
+  r.require_array(ss, "/springs");
+  if (!s.forces.springs.empty())
+    r.at_most(ss.size() + s.forces.springs.size(), "/springs", kMaxSprings,
+              "springs (" + std::to_string(ss.size()) + " listed and " + std::to_string(s.forces.springs.size()) +
+                  " of the cloth)");
+  const auto n = static_cast<std::int64_t>(s.particles.size());
+  for (std::size_t k = 0; k < ss.size(); ++k) {
+    const std::string w = child("/springs", k);
+    const Json& sp = r.require_object(ss[k], w);
+    r.only_keys(sp, w, {"i", "j", "stiffness", "rest_length", "damping"});
+    Spring spring;
+    spring.i = static_cast<int>(r.integer(r.require(sp, w, "i"), child(w, "i"), 0, n - 1));
+    spring.j = static_cast<int>(r.integer(r.require(sp, w, "j"), child(w, "j"), 0, n - 1));
+    if (spring.i == spring.j) r.fail(child(w, "j"), "a spring needs two different particles");
+    spring.stiffness = r.number_in(r.require(sp, w, "stiffness"), child(w, "stiffness"), 0.0, 1e12);
+    spring.rest_length = sp.contains("rest_length")
+                             ? r.number_in(sp["rest_length"], child(w, "rest_length"), 0.0, kMaxCoordinate)
+                             : (s.particles.x[spring.j] - s.particles.x[spring.i]).norm();
+    if (sp.contains("damping")) spring.damping = r.number_in(sp["damping"], child(w, "damping"), 0.0, 1e12);
+    s.forces.springs.push_back(spring);
+  }
 }
 
 }  // namespace
@@ -112,6 +207,7 @@ Scene scene_from_json(const Json& doc, const std::string& file) {
   r.require_object(doc, root);
   r.only_keys(doc, root, {"integrator", "dt", "steps", "seed", "gravity", "air_drag", "wind", "particles", "springs",
                           "planes", "contact", "cloth", "self_collision"});
+  check_list_sizes(r, doc);
   Scene s;
   if (doc.contains("integrator")) {
     const std::string name = r.string(doc["integrator"], "/integrator");
@@ -132,72 +228,15 @@ Scene scene_from_json(const Json& doc, const std::string& file) {
     const Json& planes = r.require_array(doc["planes"], "/planes");
     for (std::size_t k = 0; k < planes.size(); ++k) s.planes.push_back(read_bounded_plane(r, planes[k], child("/planes", k), /*strict=*/true));
   }
-  if (doc.contains("contact")) {
-    const Json& c = r.require_object(doc["contact"], "/contact");
-    r.only_keys(c, "/contact", {"static_threshold", "tangential_threshold", "bisection_tolerance", "max_events_per_step"});
-    if (c.contains("static_threshold"))
-      s.contact.static_threshold = r.number_in(c["static_threshold"], "/contact/static_threshold", 0.0, 1e6);
-    if (c.contains("tangential_threshold"))
-      s.contact.tangential_threshold = r.number_in(c["tangential_threshold"], "/contact/tangential_threshold", 0.0, 1e6);
-    if (c.contains("bisection_tolerance")) {
-      s.contact.bisection_tolerance = r.number(c["bisection_tolerance"], "/contact/bisection_tolerance", kMaxDt);
-      if (!(s.contact.bisection_tolerance > 0.0)) r.fail("/contact/bisection_tolerance", "must be > 0");
-    }
-    if (c.contains("max_events_per_step"))
-      s.contact.max_events_per_step =
-          static_cast<int>(r.integer(c["max_events_per_step"], "/contact/max_events_per_step", 1, 1000000));
-  }
-
-  if (doc.contains("particles")) {
-    const Json& ps = r.require_array(doc["particles"], "/particles");
-    for (std::size_t k = 0; k < ps.size(); ++k) {
-      const std::string w = child("/particles", k);
-      const Json& p = r.require_object(ps[k], w);
-      r.only_keys(p, w, {"position", "velocity", "mass", "pinned", "elasticity"});
-      const Vec3 x = r.vec3(r.require(p, w, "position"), child(w, "position"), kMaxCoordinate);
-      Vec3 v = Vec3::Zero();
-      if (p.contains("velocity")) v = r.vec3(p["velocity"], child(w, "velocity"), kMaxSpeed);
-      const bool pinned = p.contains("pinned") && r.boolean(p["pinned"], child(w, "pinned"));
-      double mass = 0.0;
-      if (!pinned || p.contains("mass")) {
-        mass = r.number(r.require(p, w, "mass"), child(w, "mass"), kMaxMass);
-        if (!(mass > 0.0)) r.fail(child(w, "mass"), "mass must be > 0 (a free particle needs a positive mass)");
-      }
-      double k_el = 1.0;
-      if (p.contains("elasticity")) {
-        k_el = r.number_in(p["elasticity"], child(w, "elasticity"), 0.0, 1.0);
-      } else if (has_planes && !pinned) {
-        r.fail(child(w, "elasticity"), "missing required key (the scene has planes)");
-      }
-      s.particles.add(x, v, mass, k_el, pinned);
-    }
-  }
-  if (doc.contains("cloth")) append_cloth(s, read_cloth(r, doc["cloth"], "/cloth"));
+  if (doc.contains("contact")) read_contact(r, doc["contact"], s.contact);
+  if (doc.contains("particles")) read_particles(r, doc["particles"], has_planes, s.particles);
+  if (doc.contains("cloth")) add_cloth(r, doc["cloth"], s);
   if (doc.contains("self_collision")) {
     s.self_collision = read_self_collision(r, doc["self_collision"], "/self_collision");
     if (s.triangles.empty()) r.fail("/self_collision", "self-collision needs a cloth (the triangle mesh it tests)");
   }
   if (s.particles.size() == 0) r.fail("/particles", "the scene has no particles (give particles or a cloth)");
-
-  if (doc.contains("springs")) {
-    const Json& ss = r.require_array(doc["springs"], "/springs");
-    const auto n = static_cast<std::int64_t>(s.particles.size());
-    for (std::size_t k = 0; k < ss.size(); ++k) {
-      const std::string w = child("/springs", k);
-      const Json& sp = r.require_object(ss[k], w);
-      r.only_keys(sp, w, {"i", "j", "stiffness", "rest_length", "damping"});
-      Spring spring;
-      spring.i = static_cast<int>(r.integer(r.require(sp, w, "i"), child(w, "i"), 0, n - 1));
-      spring.j = static_cast<int>(r.integer(r.require(sp, w, "j"), child(w, "j"), 0, n - 1));
-      if (spring.i == spring.j) r.fail(child(w, "j"), "a spring needs two different particles");
-      spring.stiffness = r.number_in(r.require(sp, w, "stiffness"), child(w, "stiffness"), 0.0, 1e12);
-      spring.rest_length = sp.contains("rest_length")
-                               ? r.number_in(sp["rest_length"], child(w, "rest_length"), 0.0, kMaxCoordinate)
-                               : (s.particles.x[spring.j] - s.particles.x[spring.i]).norm();
-      if (sp.contains("damping")) spring.damping = r.number_in(sp["damping"], child(w, "damping"), 0.0, 1e12);
-      s.forces.springs.push_back(spring);
-    }
-  }
+  if (doc.contains("springs")) read_springs(r, doc["springs"], s);
   return s;
 }
 

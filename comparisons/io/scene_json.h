@@ -3,7 +3,7 @@
 /// Keys (units SI; optional unless said):
 ///   integrator  "euler" | "symplectic" | "midpoint" | "rk4"   (default "symplectic", the seed's engine)
 ///   dt          step [s], required, 0 < dt <= 10
-///   steps       number of steps, required, 0 <= steps <= 1e9
+///   steps       number of steps, required, 0 <= steps <= 1e9 (and the work limit of `tecido run`)
 ///   seed        non-negative integer (default 0); drives random choices (a swirl's phase)
 ///   gravity     [gx,gy,gz] [m/s^2]; absent = no gravity
 ///   air_drag    linear drag coefficient c >= 0 [kg/s], force -c v; absent = none
@@ -17,8 +17,10 @@
 ///   cloth       {"rows","cols","spacing","origin","axis_u","axis_v","total_mass","stiffness_b",
 ///                "stiffness_a","damping","elasticity","pins":[[r,c],..]}
 /// Keys starting with '_' are comments; any other unknown key is an error (a typo must not
-/// silently remove a force).
+/// silently remove a force). Sizes are bounded (comparisons/io/limits.h): particles (listed and
+/// cloth nodes), springs (listed and the cloth's) and planes are counted before any is read.
 #include "comparisons/io/json_reader.h"
+#include "comparisons/io/limits.h"
 #include "core/scene/scene.h"
 
 #include <string>
@@ -29,12 +31,5 @@ namespace tecido::io {
 Scene load_scene(const std::string& path);
 /// Validates an already-parsed document; `file` names it in messages.
 Scene scene_from_json(const Json& doc, const std::string& file);
-
-/// Bounds used by the validation, documented in README's bad-input table.
-constexpr double kMaxCoordinate = 1e12;  ///< |position| components [m]
-constexpr double kMaxSpeed = 1e8;        ///< |velocity| components [m/s]
-constexpr double kMaxMass = 1e12;        ///< [kg]
-constexpr double kMaxDt = 10.0;          ///< [s]
-constexpr long long kMaxSteps = 1000000000LL;
 
 }  // namespace tecido::io

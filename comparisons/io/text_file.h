@@ -5,7 +5,8 @@
 namespace tecido::io {
 
 /// The file's bytes. Throws InputError(path, "", ...) for a missing file, a directory, an
-/// unreadable file or a read error.
+/// unreadable file, a read error, or more than kMaxInputBytes (comparisons/io/limits.h): at
+/// most one byte past the limit is read, so a stream without end (/dev/zero) is rejected too.
 std::string read_text_file(const std::string& path);
 
 }  // namespace tecido::io

@@ -1,5 +1,8 @@
 #include "comparisons/io/tri_pairs.h"
 
+#include "comparisons/io/entry_id.h"
+#include "comparisons/io/limits.h"
+
 namespace tecido::io {
 
 namespace {
@@ -14,13 +17,15 @@ Triangle read_triangle(const JsonReader& r, const Json& j, const std::string& w)
 std::vector<TriPair> tri_pairs_from_json(const Json& doc, const std::string& file) {
   JsonReader r(file);
   const Json& pairs = r.require_array(r.require(doc, "", "pairs"), "/pairs");
+  r.at_most(pairs.size(), "/pairs", kMaxPairs, "pairs");
+  UniqueIds ids;
   std::vector<TriPair> out;
   out.reserve(pairs.size());
   for (std::size_t k = 0; k < pairs.size(); ++k) {
     const std::string w = child("/pairs", k);
     const Json& p = r.require_object(pairs[k], w);
     TriPair tp;
-    tp.id = p.contains("id") ? (p["id"].is_string() ? p["id"].get<std::string>() : p["id"].dump()) : std::to_string(k);
+    tp.id = ids.read(r, p, w, k);
     tp.a = read_triangle(r, r.require(p, w, "a"), child(w, "a"));
     tp.b = read_triangle(r, r.require(p, w, "b"), child(w, "b"));
     out.push_back(std::move(tp));

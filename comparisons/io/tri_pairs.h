@@ -1,7 +1,8 @@
 #pragma once
 /// The pairs file of `tecido tritri` (docs/design.md section 3):
 /// {"pairs":[{"id":"..","a":[[x,y,z],[x,y,z],[x,y,z]],"b":[[..],[..],[..]]}]}. Unknown keys
-/// (labels) are ignored. Coordinates must be finite (|x| <= 1e15).
+/// (labels) are ignored. Coordinates must be finite (|x| <= 1e15). Ids are unique (an absent id
+/// is the pair's index; comparisons/io/entry_id.h); at most kMaxPairs pairs.
 #include "comparisons/io/json_reader.h"
 #include "core/geometry/types.h"
 

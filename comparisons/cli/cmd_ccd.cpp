@@ -1,0 +1,136 @@
+// tecido ccd --queries FILE.json [--engines core,exact,fcl,bullet] --json
+// tecido ccd --queries FILE.csv --csv-kind vertex-face|edge-edge [--engines ...] --json
+// Prints {"results":[{"id","<engine>":{"hit":bool,"toi":t|null}|null, ...}]} (null: the engine
+// cannot answer this query), engines in the order named. When the queries carry a truth (the CSV's
+// ground-truth column, or "truth" in a JSON file such as the ccd suite's disagreements), each
+// result adds "truth" and stderr gets one summary line per engine: false positives and negatives.
+// CSV queries add "rounded": whether some rational coordinate is not a double; the exact engine
+// answers on the rationals, the others on the nearest doubles, and their errors on rounded queries
+// are counted apart (they answered a slightly different query). Formats: comparisons/io/ccd_queries.h.
+#include "comparisons/cli/commands.h"
+#include "comparisons/engines/ccd_engines.h"
+#include "comparisons/io/ccd_queries.h"
+#include "comparisons/io/input_error.h"
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include <iostream>
+#include <memory>
+
+namespace tecido::cli {
+
+namespace {
+
+using OJson = nlohmann::ordered_json;
+
+/// One engine's tally against the truth: exact-double queries, and rounded ones apart.
+struct Tally {
+  long queries = 0, fp = 0, fn = 0, rounded = 0, rounded_fp = 0, rounded_fn = 0, no_answer = 0;
+};
+
+void count(Tally& t, const std::optional<CcdAnswer>& a, bool truth, bool apart) {
+  if (!a) {
+    ++t.no_answer;
+    return;
+  }
+  const bool fp = a->hit && !truth, fn = !a->hit && truth;
+  if (apart) {
+    ++t.rounded, t.rounded_fp += fp, t.rounded_fn += fn;
+  } else {
+    ++t.queries, t.fp += fp, t.fn += fn;
+  }
+}
+
+std::string summary(const std::string& name, const Tally& t) {
+  std::string s = fmt::format("tecido ccd: {}: {} false positives, {} false negatives of {} queries", name, t.fp, t.fn,
+                              t.queries);
+  if (t.rounded) s += fmt::format("; rounded queries apart: {} false positives, {} false negatives of {}",
+                                  t.rounded_fp, t.rounded_fn, t.rounded);
+  if (t.no_answer) s += fmt::format("; no answer on {}", t.no_answer);
+  return s;
+}
+
+CcdKind parse_csv_kind(const std::string& s) {
+  if (s == "vertex-face") return CcdKind::VertexFace;
+  if (s == "edge-edge") return CcdKind::EdgeEdge;
+  throw io::UsageError("--csv-kind: expected vertex-face or edge-edge, got \"" + s + "\"");
+}
+
+std::vector<io::CcdQueryEntry> load(const std::string& path, const std::string& csv_kind) {
+  if (!csv_kind.empty()) return io::load_ccd_queries_csv(path, parse_csv_kind(csv_kind));
+  if (path.size() >= 4 && path.compare(path.size() - 4, 4, ".csv") == 0)
+    throw io::UsageError("--queries " + path + ": a CSV file needs --csv-kind vertex-face|edge-edge");
+  return io::load_ccd_queries_json(path);
+}
+
+OJson answer_json(const std::optional<CcdAnswer>& a) {
+  if (!a) return nullptr;
+  return OJson{{"hit", a->hit}, {"toi", a->hit ? OJson(a->toi) : OJson(nullptr)}};
+}
+
+int run_ccd(const std::string& path, const std::string& csv_kind, const std::string& engine_list) {
+  std::vector<std::string> known;
+  for (const auto& e : ccd_engines()) known.push_back(e.name);
+  const auto names = parse_engine_list(engine_list, known, "ccd");
+  std::vector<const CcdEngine*> engines;
+  for (const auto& n : names) engines.push_back(find_ccd_engine(n));
+  std::vector<io::CcdQueryEntry> entries = load(path, csv_kind);
+  bool all_truth = true;
+  for (const auto& e : entries) all_truth = all_truth && e.truth.has_value();
+  std::vector<Tally> tally(engines.size());
+  OJson results = OJson::array();
+  for (io::CcdQueryEntry& e : entries) {
+    const bool rounded = prepare_ccd_entry(e);
+    OJson row{{"id", e.id}};
+    if (e.truth) row["truth"] = *e.truth;
+    if (e.rational) row["rounded"] = rounded;
+    for (std::size_t k = 0; k < engines.size(); ++k) {
+      const auto a = answer_ccd_entry(*engines[k], e);
+      row[engines[k]->name] = answer_json(a);
+      if (all_truth) count(tally[k], a, *e.truth, rounded && !engines[k]->test_rational);
+    }
+    results.push_back(std::move(row));
+  }
+  std::cout << OJson{{"results", results}}.dump() << "\n";
+  if (all_truth && !entries.empty())
+    for (std::size_t k = 0; k < engines.size(); ++k) std::cerr << summary(engines[k]->name, tally[k]) << "\n";
+  return 0;
+}
+
+Command add_ccd(CLI::App& app) {
+  struct Opts {
+    std::string queries, csv_kind, engines;
+    bool json = false;
+  };
+  auto o = std::make_shared<Opts>();
+  std::string all;
+  for (const auto& e : ccd_engines()) all += (all.empty() ? "" : ",") + e.name;
+  o->engines = all;
+  CLI::App* sub = app.add_subcommand(
+      "ccd", "Continuous collision (vertex-face, edge-edge over one time step) per engine, against a truth when given");
+  sub->add_option("--queries", o->queries,
+                  "Queries file: JSON {\"queries\":[{\"id\",\"kind\":\"vertex-face\"|\"edge-edge\",\"t0\":[[x,y,z]x4],"
+                  "\"t1\":[[x,y,z]x4]}]} (vertex-face: vertex, then the triangle's corners; edge-edge: a0, a1, b0, b1), "
+                  "or the CCD benchmark's CSV with --csv-kind")
+      ->required();
+  sub->add_option("--csv-kind", o->csv_kind,
+                  "Read --queries as the CCD benchmark's CSV of this kind (vertex-face|edge-edge): 8 rows per query "
+                  "(t0 rows, then t1 rows), columns x num, x den, y num, y den, z num, z den, truth (0/1); ids are "
+                  "the 0-based query index");
+  sub->add_option("--engines", o->engines, "Comma-separated engines (" + all + "; bullet answers vertex-face only)")
+      ->capture_default_str();
+  sub->add_flag("--json", o->json, "Print JSON (the only output format; kept for the contract)");
+  sub->footer(
+      "Output: {\"results\":[{\"id\",\"truth\"?,\"rounded\"?,\"<engine>\":{\"hit\":bool,\"toi\":t|null}|null}]}. "
+      "With a truth (CSV, or \"truth\" in JSON), stderr gets one line per engine: false positives and negatives; "
+      "CSV queries whose rationals are not doubles (\"rounded\": true) are answered by exact on the rationals and "
+      "by the others on the nearest doubles, and counted apart for the others.");
+  return [o]() { return run_ccd(o->queries, o->csv_kind, o->engines); };
+}
+
+}  // namespace
+
+TECIDO_REGISTER_COMMAND(ccd, add_ccd);
+
+}  // namespace tecido::cli

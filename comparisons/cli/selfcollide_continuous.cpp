@@ -1,0 +1,93 @@
+#include "comparisons/cli/selfcollide_continuous.h"
+
+#include "comparisons/cli/commands.h"
+#include "comparisons/io/input_error.h"
+#include "comparisons/io/obj_mesh.h"
+#include "core/cloth/continuous_self_collision.h"
+#ifdef TECIDO_HAVE_REFERENCE
+#include "reference/exact_ccd.h"
+#endif
+
+#include <nlohmann/json.hpp>
+
+#include <iostream>
+
+namespace tecido::cli {
+
+namespace {
+
+#ifdef TECIDO_HAVE_REFERENCE
+CcdAnswer exact_test(const CcdQuery& q) { return reference::to_ccd_answer(reference::exact_ccd(q)); }
+#endif
+
+/// The two frames must be one mesh: same vertex count, same triangles in the same order.
+void check_same_mesh(const io::ObjMesh& a, const io::ObjMesh& b, const std::string& start, const std::string& end) {
+  if (a.vertices.size() != b.vertices.size())
+    throw io::UsageError("--to " + end + ": " + std::to_string(b.vertices.size()) + " vertices, but --mesh " + start +
+                         " has " + std::to_string(a.vertices.size()) + " (the frames must be one mesh: same vertices, same faces)");
+  if (a.triangles.size() != b.triangles.size())
+    throw io::UsageError("--to " + end + ": " + std::to_string(b.triangles.size()) + " triangles, but --mesh " + start +
+                         " has " + std::to_string(a.triangles.size()) + " (the frames must have the same faces)");
+  for (std::size_t k = 0; k < a.triangles.size(); ++k)
+    if (a.triangles[k] != b.triangles[k])
+      throw io::InputError(end, "line " + std::to_string(b.triangle_line[k]),
+                           "triangle " + std::to_string(k) + " differs from " + start + "'s (line " +
+                               std::to_string(a.triangle_line[k]) + "): the frames must have the same faces");
+}
+
+void check_size(const std::string& engine, std::size_t triangles, std::size_t limit, const std::string& file) {
+  if (triangles > limit)
+    throw io::UsageError("--engines: " + engine + " tests every pair and takes at most " + std::to_string(limit) +
+                         " triangles, but " + file + " has " + std::to_string(triangles) + " (use core)");
+}
+
+ContinuousContacts run_engine(const std::string& name, const io::ObjMesh& m0, const io::ObjMesh& m1) {
+  const auto& x0 = m0.vertices;
+  const auto& x1 = m1.vertices;
+  const auto& tris = m0.triangles;
+  if (name == "core-brute") return continuous_self_collision_brute(x0, x1, tris);
+#ifdef TECIDO_HAVE_REFERENCE
+  if (name == "exact") return continuous_self_collision_brute(x0, x1, tris, &exact_test);
+#endif
+  ContinuousSelfCollisionDetector det(tris, x0);
+  const ContinuousContacts& candidates = det.detect(x0, x1);
+#ifdef TECIDO_HAVE_REFERENCE
+  return filter_contacts(candidates, x0, x1, tris, [](const CcdQuery& q) { return reference::exact_ccd(q).hit; });
+#else
+  return candidates;  // without the referee: core's candidates, unconfirmed (README)
+#endif
+}
+
+nlohmann::ordered_json contacts_json(const ContinuousContacts& c) {
+  nlohmann::ordered_json vf = nlohmann::ordered_json::array(), ee = nlohmann::ordered_json::array();
+  for (const auto& p : c.vertex_face) vf.push_back({p[0], p[1]});
+  for (const auto& p : c.edge_edge) ee.push_back({{p[0][0], p[0][1]}, {p[1][0], p[1][1]}});
+  return {{"vertex_face", std::move(vf)}, {"edge_edge", std::move(ee)}};
+}
+
+}  // namespace
+
+const std::vector<std::string>& continuous_selfcollide_engines() {
+#ifdef TECIDO_HAVE_REFERENCE
+  static const std::vector<std::string> names = {"core", "core-brute", "exact"};
+#else
+  static const std::vector<std::string> names = {"core", "core-brute"};
+#endif
+  return names;
+}
+
+int run_selfcollide_continuous(const std::string& start, const std::string& end, const std::string& engines) {
+  const auto names = parse_engine_list(engines, continuous_selfcollide_engines(), "continuous self-collision");
+  const io::ObjMesh m0 = io::load_obj_mesh(start), m1 = io::load_obj_mesh(end);
+  check_same_mesh(m0, m1, start, end);
+  for (const auto& n : names) {
+    if (n == "core-brute") check_size(n, m0.triangles.size(), kMaxBruteForceTriangles, start);
+    if (n == "exact") check_size(n, m0.triangles.size(), kMaxExactContinuousTriangles, start);
+  }
+  nlohmann::ordered_json out = nlohmann::ordered_json::object();
+  for (const auto& n : names) out[n] = contacts_json(run_engine(n, m0, m1));
+  std::cout << out.dump() << "\n";
+  return 0;
+}
+
+}  // namespace tecido::cli

@@ -1,0 +1,195 @@
+#include "comparisons/suites/ccd/ccd_report.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <map>
+
+namespace tecido::suites::ccd {
+
+namespace {
+
+/// The engine names of the results (the registry's order), from the first family that ran.
+std::vector<std::string> engine_names(const std::vector<FamilyResult>& results, const std::vector<std::string>& failed) {
+  for (std::size_t k = 0; k < results.size(); ++k)
+    if (failed[k].empty()) {
+      std::vector<std::string> names;
+      for (const EngineTally& e : results[k].engines) names.push_back(e.engine);
+      return names;
+    }
+  return {};
+}
+
+std::string header(const std::string& first, const std::vector<std::string>& engines) {
+  std::string md = "| " + first + " |", rule = "|---|";
+  for (const auto& e : engines) md += " " + e + " |", rule += "---:|";
+  return md + "\n" + rule + "\n";
+}
+
+/// "fn / fp" (and "(n null)" when the engine could not answer some), "n/a" when it answered none.
+std::string fn_fp_cell(const EngineTally& e) {
+  if (e.no_answer == e.queries) return "n/a";
+  std::string s = fmt::format("{} / {}", e.fn, e.fp);
+  if (e.no_answer) s += fmt::format(" ({} null)", e.no_answer);
+  return s;
+}
+
+std::string toi_cell(const EngineTally& e) {
+  if (e.both_hit == 0) return "–";
+  std::string s = fmt::format("{:.2g} / {:.2g}", e.max_toi_error, e.mean_toi_error());
+  if (e.toi_after) s += fmt::format(" ({} late)", e.toi_after);
+  return s;
+}
+
+/// Per engine: queries, seconds, false negatives and positives, contacts and non-contacts summed
+/// over the families that ran.
+struct Totals {
+  long queries = 0, fn = 0, fp = 0, contacts = 0, non_contacts = 0, answered = 0;
+  double seconds = 0.0;
+  std::vector<std::string> fn_families;
+};
+
+std::map<std::string, Totals> totals(const std::vector<FamilyResult>& results, const std::vector<std::string>& failed) {
+  std::map<std::string, Totals> t;
+  for (std::size_t k = 0; k < results.size(); ++k) {
+    if (!failed[k].empty()) continue;
+    const FamilyResult& r = results[k];
+    for (const EngineTally& e : r.engines) {
+      Totals& x = t[e.engine];
+      x.queries += e.queries, x.seconds += e.seconds, x.fn += e.fn, x.fp += e.fp;
+      if (e.no_answer == e.queries) continue;
+      x.answered += e.queries - e.no_answer, x.contacts += r.contacts, x.non_contacts += r.queries - r.contacts;
+      if (e.fn) x.fn_families.push_back(fmt::format("{} ({})", r.family, e.fn));
+    }
+  }
+  return t;
+}
+
+std::string join(const std::vector<std::string>& xs) {
+  std::string s;
+  for (std::size_t i = 0; i < xs.size(); ++i) s += (i ? ", " : "") + xs[i];
+  return s;
+}
+
+}  // namespace
+
+std::string method_markdown(const Settings& s, std::uint64_t seed) {
+  std::string md = fmt::format(
+      "Continuous collision (vertex-face, edge-edge; linear motion over t in [0, 1]): {} queries per constructed "
+      "family and {} per random family (seed {}), every engine against the exact referee (`reference/exact_ccd.h`: exact on the doubles). Every family but "
+      "`random` is built on small dyadic rationals with its answer known by construction (contact and its time), "
+      "moved off the axes by exact dyadic affine maps and relabelled; the referee must reproduce every constructed "
+      "answer, and on the first {} queries of each family it must give the same answer without its floating-point "
+      "filter. FN = contacts an engine missed, FP = misses it called hits; time-of-impact error |toi - t*| where both "
+      "hit (max / mean; \"late\": toi certainly after t*, which the referee's own toi is when t* is not a double and "
+      "rounds up to the nearest one). ns/query: wall time over the family's block, one thread of "
+      "this run (cases share the machine; the benchmarks BM_CCD measure speed). Scale family: 2^e for e in {}, offsets "
+      "2^k for k in {}; near misses by {} units of 2^-52.\n\nFamilies:\n\n",
+      s.per_family, s.random_per_family, seed, s.unfiltered_per_family, fmt::join(s.scale_exponents, ", "),
+      fmt::join(s.offset_exponents, ", "), fmt::join(s.near_miss_ulps, ", "));
+  for (const Family& f : families()) md += fmt::format("- `{}`: {}\n", family_name(f), f.about);
+  return md + "\n";
+}
+
+std::string kind_tables(CcdKind kind, const std::vector<FamilyResult>& results, const std::vector<std::string>& failed) {
+  const std::vector<std::string> engines = engine_names(results, failed);
+  std::string fnfp = header("family | queries | contacts", engines), toi = header("family", engines),
+              ns = header("family", engines);
+  fnfp.replace(fnfp.find("|---|"), 5, "|---|---:|---:|");
+  const auto& fams = families();
+  for (std::size_t k = 0; k < fams.size(); ++k) {
+    if (fams[k].kind != kind) continue;
+    if (!failed[k].empty()) {
+      fnfp += fmt::format("| {} | failed: {} |\n", fams[k].name, failed[k]);
+      continue;
+    }
+    const FamilyResult& r = results[k];
+    fnfp += fmt::format("| {} | {} | {} |", fams[k].name, r.queries, r.contacts);
+    toi += "| " + std::string(fams[k].name) + " |";
+    ns += "| " + std::string(fams[k].name) + " |";
+    for (const EngineTally& e : r.engines) {
+      fnfp += " " + fn_fp_cell(e) + " |";
+      toi += " " + toi_cell(e) + " |";
+      ns += e.no_answer == e.queries ? " n/a |" : fmt::format(" {:.0f} |", e.ns_per_query());
+    }
+    fnfp += "\n", toi += "\n", ns += "\n";
+  }
+  return fmt::format("### {}\n\nFalse negatives / false positives against the referee:\n\n{}\nTime-of-impact error "
+                     "where both hit, max / mean:\n\n{}\nns per query:\n\n{}\n",
+                     ccd_kind_name(kind), fnfp, toi, ns);
+}
+
+std::string referee_table(const std::vector<FamilyResult>& results, const std::vector<std::string>& failed) {
+  std::string md = "### The referee\n\n| family | constructed answers | referee differs | checked without filter | "
+                   "differs |\n|---|---:|---:|---:|---:|\n";
+  for (std::size_t k = 0; k < results.size(); ++k) {
+    if (!failed[k].empty()) continue;
+    const FamilyResult& r = results[k];
+    md += fmt::format("| {} | {} | {} | {} | {} |\n", r.family, r.known, r.known_mismatch, r.unfiltered,
+                      r.unfiltered_mismatch);
+  }
+  return md + "\n";
+}
+
+std::string conclusions(const std::vector<FamilyResult>& results, const std::vector<std::string>& failed) {
+  const auto t = totals(results, failed);
+  std::string md = "### From these tables\n\n";
+  for (const auto& name : engine_names(results, failed)) {
+    const Totals& x = t.at(name);
+    md += fmt::format("- `{}`: ", name);
+    md += x.fn_families.empty() ? "missed no contact" : "missed contacts on " + join(x.fn_families);
+    md += fmt::format("; {} false positives in {} non-contacts ({:.3g}%)", x.fp, x.non_contacts,
+                      x.non_contacts ? 100.0 * x.fp / x.non_contacts : 0.0);
+    md += fmt::format("; {:.0f} ns per query over the whole mix", x.queries ? 1e9 * x.seconds / x.queries : 0.0);
+    if (x.answered < x.queries) md += fmt::format(" (answers {} of {} queries)", x.answered, x.queries);
+    md += ".\n";
+  }
+  if (t.count("core") && t.count("exact") && t.at("exact").seconds > 0)
+    md += fmt::format("\nOver this mix core took {:.3g}x the referee's time per query", t.at("core").seconds / t.at("exact").seconds);
+  if (t.count("core") && t.count("fcl") && t.at("fcl").seconds > 0)
+    md += fmt::format(" and {:.3g}x FCL's", t.at("core").seconds / t.at("fcl").seconds);
+  return md + ".\n\n";
+}
+
+std::string sheet_markdown(const SheetResult& r, const SheetSettings& s) {
+  std::string md = fmt::format(
+      "### A sheet through a sheet\n\nTwo {0}x{0} sheets in one mesh; one falls through the other within one step of "
+      "{1} s (comparisons/suites/ccd/sheet_through_sheet.h).\n\n| measurement | value |\n|---|---:|\n"
+      "| intersecting pairs in the two frames (core + exact) | {2} |\n| referee's contacts between the frames | {3} |\n"
+      "| core (candidates confirmed exactly): contacts / missed / extra | {4} / {5} / {6} |\n"
+      "| core's candidates vs core-brute's: pairs in only one | {7} |\n| core-brute: missed | {8} |\n"
+      "| discrete + no response: checks seeing a pair / ended below the other sheet | {9} / {10} |\n"
+      "| continuous + impulse: referee's contacts between consecutive frames over {11} of {12} steps | {13} |\n\n",
+      s.n, s.dt, r.discrete_pairs, r.exact_contacts, r.core_contacts, r.core_missed, r.core_extra, r.candidates_differ,
+      r.brute_missed, r.discrete_run_contacts, r.discrete_passed ? "yes" : "no", r.impulse_steps, s.steps,
+      r.impulse_contacts);
+  const bool invisible = r.discrete_pairs == 0 && r.discrete_run_contacts == 0 && r.discrete_passed;
+  md += fmt::format("From this table: discrete detection {} the pass-through; continuous detection {} ({} contacts); "
+                    "with the impulse response the sheets {}.\n\n",
+                    invisible ? "never saw" : "saw part of", r.core_missed == 0 && r.core_extra == 0 ? "found exactly the referee's contacts" : "differed from the referee",
+                    r.exact_contacts, r.impulse_contacts == 0 ? "never touched between frames" : "still touched between frames");
+  return md;
+}
+
+io::Json results_json(const std::vector<FamilyResult>& results) {
+  io::Json j = io::Json::object();
+  for (const FamilyResult& r : results) {
+    if (r.family.empty()) continue;
+    io::Json e = io::Json::object();
+    for (const EngineTally& t : r.engines)
+      e[t.engine] = {{"fn", t.fn},
+                     {"fp", t.fp},
+                     {"no_answer", t.no_answer},
+                     {"fn_rate", r.fn_rate(t)},
+                     {"fp_rate", r.fp_rate(t)},
+                     {"max_toi_error", t.max_toi_error},
+                     {"mean_toi_error", t.mean_toi_error()},
+                     {"toi_after", t.toi_after},
+                     {"ns_per_query", t.ns_per_query()}};
+    j[r.family] = {{"queries", r.queries}, {"contacts", r.contacts}, {"known", r.known},
+                   {"known_mismatch", r.known_mismatch}, {"unfiltered_mismatch", r.unfiltered_mismatch}, {"engines", e}};
+  }
+  return j;
+}
+
+}  // namespace tecido::suites::ccd

@@ -1,0 +1,20 @@
+#include "comparisons/suites/ccd/disagreements.h"
+
+#include "comparisons/engines/ccd_engines.h"
+
+namespace tecido::suites::ccd {
+
+void add_disagreements(const std::string& family, const FamilyResult& r, const std::vector<KnownQuery>& queries,
+                       std::size_t cap, std::vector<io::CcdQueryEntry>& out) {
+  const auto& engines = ccd_engines();
+  for (const Disagreement& d : r.disagree) {
+    if (out.size() >= cap) return;
+    io::CcdQueryEntry e;
+    e.id = engines.at(static_cast<std::size_t>(d.engine)).name + ":" + family + "/" + std::to_string(d.query);
+    e.query = queries.at(static_cast<std::size_t>(d.query)).q;
+    e.truth = d.truth;
+    out.push_back(std::move(e));
+  }
+}
+
+}  // namespace tecido::suites::ccd
