@@ -31,8 +31,8 @@ std::vector<OrderEngine> core_order_engines();
 /// throws std::runtime_error("not modelled by NAME: why"), which fails its check with that reason.
 OrderEngine outside_order_engine(const outside::OutsideEnginePtr& engine);
 
-/// core's four and every outside dynamics engine of ctx, those ctx.selects(); io::UsageError when
-/// --engines names engines but none of them runs here.
+/// core's four and every outside dynamics engine of ctx, those ctx.selects() (none, when --engines
+/// names only engines of other suites).
 std::vector<OrderEngine> order_engines(const SuiteContext& ctx);
 
 }  // namespace tecido::suites::order

@@ -91,6 +91,7 @@ SuiteResult assemble(const Plan& plan_in, const SuiteContext& ctx, const std::ve
     md += order::fit_table(p, runs) + order::fit_plot(ctx, p, runs, res.plots) + "\n";
     h2h.push_back(head_to_head(plan, p, runs));
   }
+  if (plan.engines.empty()) md += "No engine ran: --engines names none of this suite's engines.\n\n";
   res.markdown = md + order::head_to_head_markdown(plan.settings, h2h);
   res.checks = plan.checks.finish();
   return res;
