@@ -78,6 +78,9 @@ std::string outside_tables(const OutsidePlan& plan, const std::vector<io::Json>&
       "initial amplitude at the end of every period (one call of the engine's door per period). No stable step down "
       "to 2^-{} / omega: –. Checked: the spread over the cells, as for core's integrators.\n\n| engine |",
       s.periods, plan.amplitude_bound, s.max_halvings);
+  std::string doors;
+  for (const auto& e : plan.engines) doors += "- " + e->name() + ": " + e->door() + "\n";
+  md.insert(md.find("| engine |"), doors + "\n");
   std::string rule = "|---|";
   for (double ks : s.stiffnesses)
     for (double m : s.masses) md += fmt::format(" {:g}/{:g} |", ks, m), rule += "---:|";

@@ -16,6 +16,7 @@
 #include "comparisons/suites/check.h"
 #include "comparisons/suites/stability/cases.h"
 #include "comparisons/suites/stability/extremes.h"
+#include "comparisons/suites/stability/outside_stability.h"
 #include "comparisons/suites/stability/settings.h"
 #include "comparisons/suites/suite.h"
 #include "comparisons/suites/sweep.h"
@@ -32,8 +33,10 @@ struct Plan {
   Layout layout;
   CheckList checks;
   VerdictBands bands;
+  OutsidePlan outside;  ///< outside dynamics engines: their cases follow the layout's
 };
-/// Reads every band from ctx.tolerances (io::InputError when one is missing) and declares the checks.
+/// Reads every band from ctx.tolerances (io::InputError when one is missing) and declares the checks;
+/// the outside dynamics engines of ctx that ctx.selects() join after the suite's own cases.
 Plan make_plan(const SuiteContext& ctx, Settings s, std::vector<ExtremeGroup> groups);
 
 /// Every case's result (index order) into the suite's checks, Markdown and data. A case that threw

@@ -4,13 +4,17 @@
 // a failed or empty cell fails the spread check with a reason naming the cell.
 #include "comparisons/engines/outside/plugin_engine.h"
 #include "comparisons/engines/outside/plugin_library.h"
+#include "comparisons/engines/outside/process_engine.h"
 #include "comparisons/suites/stability/cases.h"
 #include "comparisons/suites/stability/outside_stability.h"
 #include "comparisons/suites/stability/theory.h"
 #include "tests/support/outside_fixtures.h"
+#include "tests/support/refusing_engine.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <chrono>
 #include <cmath>
 
 namespace tecido::suites::stability {
@@ -52,24 +56,41 @@ TEST(OutsideStability, EulerPluginAgainstItsGrowth) {
   }
 }
 
-/// An engine that refuses every scene.
-class Refuser final : public outside::OutsideEngine {
- public:
-  const std::string& name() const override { return name_; }
-  std::string door() const override { return "test"; }
-  bool is_process() const override { return false; }
-  outside::Capabilities capabilities() const override { return {false, false, false, false, true}; }
-  std::optional<double> claimed_order() const override { return std::nullopt; }
-  std::vector<std::optional<bool>> tri_tri(const std::vector<outside::TriTriQuery>&) override { return {}; }
-  std::vector<std::optional<SegmentPlaneHit>> segment_plane(const std::vector<outside::SegmentPlaneQuery>&) override {
-    return {};
+/// The explicit midpoint method on x'' = -omega^2 x maps (x, v / omega) by r R(theta) per step,
+/// r = sqrt(1 + z^4 / 4), theta = atan2(z, 1 - z^2 / 2), z = h omega: from rest at x = 1 its x after
+/// k steps is r^k cos(k theta). Whether it stays within `bound` at the end of every period, as
+/// outside_stable checks it (a period is ceil(2 pi / z) steps, the run ceil(P 2 pi / z)).
+bool midpoint_within(double z, double periods, double bound) {
+  const long long n = static_cast<long long>(std::ceil(periods * 2.0 * kPi / z));
+  const long long per = static_cast<long long>(std::ceil(2.0 * kPi / z));
+  const double r = std::sqrt(1.0 + z * z * z * z / 4.0), theta = std::atan2(z, 1.0 - z * z / 2.0);
+  for (long long k = std::min(per, n);; k = std::min(k + per, n)) {
+    if (!(std::abs(std::pow(r, static_cast<double>(k)) * std::cos(k * theta)) <= bound)) return false;
+    if (k == n) return true;
   }
-  std::vector<std::optional<CcdAnswer>> ccd(const std::vector<CcdQuery>&) override { return {}; }
-  outside::Creation create(const Scene&) override { return {nullptr, "springs: not modelled"}; }
+}
 
- private:
-  std::string name_ = "refuser";
-};
+TEST(OutsideStability, PythonMidpointAgainstItsGrowth) {
+  using namespace std::chrono_literals;
+  const auto py = outside::ProcessEngine::start("py", testing::kPythonEngine, 30s);
+  const double bound = 1000.0, periods = 100.0;
+  double lo = 0.3, hi = 0.6;
+  ASSERT_TRUE(midpoint_within(lo, periods, bound));
+  ASSERT_FALSE(midpoint_within(hi, periods, bound));
+  for (int i = 0; i < 60; ++i) (midpoint_within(0.5 * (lo + hi), periods, bound) ? lo : hi) = 0.5 * (lo + hi);
+  const double z = lo;  // about (4 ln 1000 / (100 pi))^(1/3)
+  EXPECT_NEAR(z, 0.44, 0.02);
+  // ks = 9, m = 1: omega = 3.
+  EXPECT_TRUE(outside_stable(*py, 9.0, 1.0, 0.97 * z / 3.0, periods, bound));
+  EXPECT_FALSE(outside_stable(*py, 9.0, 1.0, 1.03 * z / 3.0, periods, bound));
+  const long long before = py->round_trips();
+  const double h = 0.97 * z / 3.0;
+  outside_stable(*py, 9.0, 1.0, h, periods, bound);
+  const long long n = steps_for(periods, 3.0, h), per = steps_for(1.0, 3.0, h);
+  EXPECT_EQ(py->round_trips() - before, 1 + (n + per - 1) / per);  // create, then one step request per period
+}
+
+using Refuser = testing::RefusingEngine;
 
 TEST(OutsideStability, RefusalThrowsNotModelled) {
   Refuser r;
