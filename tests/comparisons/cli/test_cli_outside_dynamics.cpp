@@ -1,8 +1,9 @@
 // Outside dynamics engines through `tecido suite stability | drift | tradeoff`, as a user runs
-// them: the example plug-in's explicit Euler finds the stable step its growth allows on every
-// cell, drifts as core's explicit Euler on the same scenes and stands on the tradeoff plane with
-// its door named; an engine that refuses every scene with springs fails each suite's checks for it
-// with "not modelled by NAME", never silently.
+// them: the example plug-in's explicit Euler and the Python midpoint find the stable step their
+// growth allows on every cell; the plug-in drifts as core's explicit Euler on the same scenes and
+// stands on the tradeoff plane where core's explicit Euler stands, its door named; an engine that
+// refuses every scene with springs fails each suite's checks for it with "not modelled by NAME",
+// never silently.
 #include "tests/support/cli_runner.h"
 #include "tests/support/outside_fixtures.h"
 
@@ -53,8 +54,9 @@ std::string refuser() {
   return "--engine-cmd " + quoted("nospring=" + testing::misbehaving_engine("refuse-springs")) + " --engines nospring";
 }
 
-TEST(CliOutsideDynamics, StabilityFindsThePluginsEulerLimitOnEveryCell) {
-  const SuiteRun r = suite("stability", kPlugin);
+TEST(CliOutsideDynamics, StabilityFindsThePluginsEulerAndThePythonMidpointLimitsOnEveryCell) {
+  const SuiteRun r = suite("stability", "--plugin " + quoted(testing::kExamplePlugin) + " --engine-cmd " +
+                                            quoted("py=" + testing::kPythonEngine) + " --engines euler-plugin,py");
   ASSERT_EQ(r.code, 0) << r.err;
   const json* c = check(r, "stability/euler-plugin/grid_spread");
   ASSERT_TRUE(c);
@@ -64,7 +66,15 @@ TEST(CliOutsideDynamics, StabilityFindsThePluginsEulerLimitOnEveryCell) {
   // Explicit Euler grows by sqrt(1 + (h omega)^2) per step: over 100 periods the amplitude reaches
   // 1000 x near h omega = 0.022 (100 pi z ~ ln 1000; tests/.../test_outside_stability.cpp solves it).
   for (const auto& cell : cells) EXPECT_NEAR(cell["h_omega"].get<double>(), 0.022, 5e-4) << cell.dump();
+  // The explicit midpoint grows by sqrt(1 + z^4 / 4) per step: 1000 x at a period's end near z = 0.45202
+  // (the closed form, solved in test_outside_stability.cpp).
+  const json* py = check(r, "stability/py/grid_spread");
+  ASSERT_TRUE(py);
+  EXPECT_TRUE((*py)["pass"].get<bool>()) << py->dump();
+  ASSERT_EQ(r.suite["data"]["outside"]["py"].size(), 9u);
+  for (const auto& cell : r.suite["data"]["outside"]["py"]) EXPECT_NEAR(cell["h_omega"].get<double>(), 0.45202, 1e-4);
   EXPECT_NE(r.md.find("- " + kDoor), std::string::npos);
+  EXPECT_NE(r.md.find("- py: process `" + testing::kPythonEngine + "`"), std::string::npos);
 }
 
 TEST(CliOutsideDynamics, DriftOfThePluginIsCoresExplicitEuler) {
