@@ -11,8 +11,10 @@
 /// predicted values), oscillator.* (the runs and the bisection), one file per group of extremes
 /// (offset, mass_ratio, near_zero, resting, tunnelling; extremes.* their common result), cases.*
 /// (the case index and table), checks.* (the declared checks), value_range.* (min/max that keep a
-/// missing value), tables.* (the tables from the case results), stability_report.* and
-/// extremes_notes.* (the prose); this file makes the plan, the sweep and assembles.
+/// missing value), tables.* (the tables from the case results), outside_stability.* (outside
+/// dynamics engines from --plugin and --engine-cmd, their cases after the suite's own),
+/// stability_report.* and extremes_notes.* (the prose); this file makes the plan, the sweep and
+/// assembles.
 #include "comparisons/suites/check.h"
 #include "comparisons/suites/stability/cases.h"
 #include "comparisons/suites/stability/extremes.h"
