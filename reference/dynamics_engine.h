@@ -17,6 +17,13 @@ class DynamicsEngine {
   /// Advances one step of the scene's dt. Returns false when the state stopped being finite (or
   /// the engine failed); later calls do nothing and return false.
   virtual bool step() = 0;
+  /// Advances n steps of the scene's dt; false as step(). Outside engines take the n steps in one
+  /// call of their door (one round trip for a process) instead of n.
+  virtual bool advance(long long n) {
+    bool ok = true;
+    for (long long i = 0; i < n && ok; ++i) ok = step();
+    return ok;
+  }
   /// Node positions [m] and velocities [m/s] in core's numbering (node i = scene particle i).
   virtual std::vector<Vec3> positions() const = 0;
   virtual std::vector<Vec3> velocities() const = 0;

@@ -6,8 +6,10 @@
 // `all --shard` shards the sweep suites and skips the others (saying so on stderr); naming a suite
 // that cannot be sharded is a usage error.
 #include "comparisons/cli/commands.h"
+#include "comparisons/cli/outside_options.h"
 #include "comparisons/cli/option_checks.h"
 #include "comparisons/cli/shard_option.h"
+#include "comparisons/engines/run_engines.h"
 #include "comparisons/io/atomic_file.h"
 #include "comparisons/io/gnuplot.h"
 #include "comparisons/io/input_error.h"
@@ -38,6 +40,8 @@ struct SuiteOptions {
   bool quick = false;
   std::uint64_t seed = 20141;
   int threads = 0;
+  std::string engines;
+  outside::OutsideOptions outside;
 };
 
 /// The suites named (`all` = every one; with --shard, every sweep, the others listed in `skipped`).
@@ -137,6 +141,15 @@ int run_suite_command(const SuiteOptions& o) {
   ctx.gnuplot = io::gnuplot_available();
   ctx.progress = true;
   io::check_output_dir(ctx.out_dir);
+  if (sharded && o.outside.any())
+    throw io::UsageError("--shard: outside engines (--plugin, --engine-cmd) run unsharded only");
+  const auto outside = load_outside_engines(o.outside);
+  ctx.outside = outside;
+  if (!o.engines.empty()) {
+    std::vector<std::string> known = builtin_engine_names();
+    for (const auto& e : outside->all()) known.push_back(e->name());
+    ctx.engines = parse_engine_list(o.engines, known, "suite");
+  }
   if (!sharded) return run_suites(chosen, ctx);
   if (!skipped.empty()) std::cerr << "suite: --shard: skipping " << skipped << " (not split into cases; run them unsharded)\n";
   return run_shard(chosen, ctx, o.shard);
@@ -164,6 +177,10 @@ Command add_suite(CLI::App& app) {
                   "Only the cases whose index % n == i of the sweep suites (" + sweeps +
                       "), e.g. 0/8: writes DIR/shard.json; join the shards with `tecido merge`")
       ->check(shard_spec());
+  sub->add_option("--engines", o->engines,
+                  "Comma-separated engines the suites run (built-in or outside, by name; default: every one). A "
+                  "suite runs those it knows; its referee always runs");
+  add_outside_options(sub, o->outside);
   return [o]() { return run_suite_command(*o); };
 }
 

@@ -1,5 +1,6 @@
 #include "comparisons/suites/report.h"
 
+#include "comparisons/engines/outside/outside_engines.h"
 #include "comparisons/io/atomic_file.h"
 
 #include <fmt/format.h>
@@ -32,10 +33,12 @@ io::Json report_json(const std::vector<SuiteResult>& results, const SuiteContext
     }
     suites.push_back({{"name", r.name}, {"checks", checks}, {"data", r.data}, {"plots", r.plots}, {"seconds", r.seconds}});
   }
-  return io::Json{{"seed", ctx.seed},
-                  {"quick", ctx.quick},
-                  {"tolerances", ctx.tolerances ? ctx.tolerances->file() : ""},
-                  {"suites", suites}};
+  io::Json j{{"seed", ctx.seed},
+             {"quick", ctx.quick},
+             {"tolerances", ctx.tolerances ? ctx.tolerances->file() : ""},
+             {"suites", suites}};
+  if (ctx.outside && !ctx.outside->empty()) j["outside_engines"] = outside::doors_json(*ctx.outside);
+  return j;
 }
 
 std::string report_markdown(const std::vector<SuiteResult>& results, const SuiteContext& ctx) {
@@ -66,6 +69,7 @@ std::string report_markdown(const std::vector<SuiteResult>& results, const Suite
         (ctx.tolerances ? ctx.tolerances->file() : std::string("?")) + "`.";
   if (!ctx.gnuplot) md += " gnuplot was not found, so this report has tables but no plots.";
   md += "\n\n";
+  if (ctx.outside) md += outside::doors_markdown(*ctx.outside);
   for (const auto& r : results) {
     md += "## " + r.name + "\n\n" + r.markdown + "\n";
     std::vector<const Check*> failing;

@@ -7,8 +7,13 @@
 
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
+
+namespace tecido::outside {
+class OutsideEngines;
+}
 
 namespace tecido::suites {
 
@@ -21,6 +26,19 @@ struct SuiteContext {
   const Tolerances* tolerances = nullptr;
   bool gnuplot = false;    ///< gnuplot found on PATH
   bool progress = false;   ///< sweep suites draw a progress bar on stderr (only on a terminal)
+  /// Engines from outside tecido's tree (--plugin, --engine-cmd), run beside the built-in ones by
+  /// the suites that can use them; null: none.
+  std::shared_ptr<const outside::OutsideEngines> outside;
+  /// --engines: the engines the suites run, by name; empty: every engine of every suite. A suite
+  /// runs the named ones it knows (its referee always runs).
+  std::vector<std::string> engines;
+  /// Whether `name` is among --engines (always true when --engines was not given).
+  bool selects(const std::string& name) const {
+    if (engines.empty()) return true;
+    for (const auto& e : engines)
+      if (e == name) return true;
+    return false;
+  }
 };
 
 struct SuiteResult {

@@ -1,7 +1,9 @@
 #include "comparisons/suites/drift/drift_suite.h"
 
 #include "comparisons/suites/drift/drift_report.h"
+#include "comparisons/engines/outside/outside_engines.h"
 #include "comparisons/suites/drift/invariants.h"
+#include "comparisons/suites/drift/outside_drift.h"
 #include "comparisons/suites/drift/scenes.h"
 #include "comparisons/suites/drift/theory.h"
 #ifdef TECIDO_HAVE_REFERENCE
@@ -153,6 +155,7 @@ struct Plan {
   drift::Settings settings;
   std::vector<drift::Conservative> scenes;
   std::vector<drift::DriftCase> cases;
+  std::vector<outside::OutsideEnginePtr> outside;  ///< their cases follow `cases` (outside_drift.h)
   CheckList checks;  ///< declared before any case runs
 };
 
@@ -186,6 +189,8 @@ SuiteResult assemble(const Plan& plan, const SuiteContext& ctx, const std::vecto
   res.name = "drift";
   CheckList checks = plan.checks;
   std::string md = drift::settings_markdown(plan.settings) + assemble_invariants(plan, ctx, results, checks, res);
+  const std::vector<io::Json> outside(results.begin() + static_cast<std::ptrdiff_t>(plan.cases.size()), results.end());
+  md += drift::outside_drift_markdown(plan.scenes, plan.outside, outside, checks, res.data);
   md += "### (b) Core versus Bullet on identical cloth scenes\n\n";
 #ifdef TECIDO_HAVE_REFERENCE
   const std::size_t b = plan.scenes.size() * std::size(drift::kKinds);
@@ -214,9 +219,18 @@ Sweep drift_sweep(const SuiteContext& ctx) {
   plan->scenes = drift::conservative_scenes(ctx.seed);
   plan->cases = drift::drift_cases(plan->settings, ctx.seed);
   plan->checks = drift::declare_drift_checks(plan->settings, ctx.seed, *ctx.tolerances);
+  if (ctx.outside)
+    for (const auto& e : ctx.outside->with(&outside::Capabilities::dynamics))
+      if (ctx.selects(e->name())) plan->outside.push_back(e);
+  drift::declare_outside_drift(plan->checks, plan->scenes, plan->outside, *ctx.tolerances);
   Sweep s;
-  s.cases = plan->cases.size();
-  s.run_case = [plan](std::size_t k) { return plan->cases.at(k).run(); };
+  s.cases = plan->cases.size() + plan->outside.size() * plan->scenes.size();
+  s.run_case = [plan](std::size_t k) {
+    if (k < plan->cases.size()) return plan->cases[k].run();
+    const std::size_t o = k - plan->cases.size(), n = plan->scenes.size();
+    return drift::invariant_json(
+        drift::run_outside_invariants(*plan->outside.at(o / n), plan->scenes.at(o % n).scene, plan->settings));
+  };
   const SuiteContext c = ctx;
   s.assemble = [plan, c](const std::vector<io::Json>& results) { return assemble(*plan, c, results); };
   return s;

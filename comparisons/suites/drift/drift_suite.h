@@ -4,9 +4,11 @@
 /// Bullet on identical cloth scenes (reference build): the deformable twin step by step, a cloth
 /// falling onto a floor, the classic soft body's kLST calibration and its check at another load.
 ///
-/// Layout: settings.h (what runs), theory.* (the predictions), scenes.* (the scenes),
-/// invariants.* (one invariants run), bullet_cases.* (the Bullet case groups), drift_report.*
-/// (tables, plots, prose); this file lists the cases, declares the checks and assembles.
+/// Layout: settings.h (what runs), theory.* (the predictions), scenes.* (the scenes), invariants.*
+/// (one invariants run), outside_drift.* (outside dynamics engines from --plugin and --engine-cmd
+/// on the same scenes, their cases after the suite's own), bullet_cases.* (the Bullet case groups),
+/// drift_report.* (tables, plots, prose); this file lists the cases, declares the checks and
+/// assembles.
 #include "comparisons/suites/drift/settings.h"
 #include "comparisons/suites/suite.h"
 #include "comparisons/suites/sweep.h"

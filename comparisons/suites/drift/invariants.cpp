@@ -47,59 +47,44 @@ double angular_momentum_scale(const std::vector<double>& inv_mass, const std::ve
   return s;
 }
 
-namespace {
+InvariantTally::InvariantTally(const Scene& s, long long steps_) : scene(s), steps(steps_) {
+  const auto& p = s.particles;
+  e0 = energy(s, p.x, p.v);
+  p0 = momentum(p.inv_mass, p.v);
+  l0 = angular_momentum(p.inv_mass, p.x, p.v);
+  p_scale0 = momentum_scale(p.inv_mass, p.v);
+  l_scale0 = angular_momentum_scale(p.inv_mass, p.x, p.v);
+  r.steps = steps_;
+}
 
-/// The running statistics of one run, fed a sample at a time.
-struct Tally {
-  const Scene& scene;
-  long long steps;
-  double e0 = 0.0, p_scale0 = 0.0, l_scale0 = 0.0;
-  Vec3 p0 = Vec3::Zero(), l0 = Vec3::Zero();
-  double first_half = 0.0, second_half = 0.0;
-  double st = 0, se = 0, stt = 0, ste = 0;
-  long long n = 0;
-  InvariantRun r;
+void InvariantTally::sample(long long i, double t, const std::vector<Vec3>& x, const std::vector<Vec3>& v,
+                            const Vec3& dl_theory, bool plot) {
+  const std::vector<double>& w = scene.particles.inv_mass;
+  const double erel = std::abs(energy(scene, x, v) - e0) / e0;
+  r.final_rel_energy = erel;
+  double& half = i <= steps / 2 ? first_half : second_half;
+  half = std::max(half, erel);
+  r.momentum_error = std::max(r.momentum_error, (momentum(w, v) - p0).norm() / std::max(p_scale0, momentum_scale(w, v)));
+  const double l_scale = std::max(l_scale0, angular_momentum_scale(w, x, v));
+  const Vec3 dl = angular_momentum(w, x, v) - l0;
+  r.angular_momentum_error = std::max(r.angular_momentum_error, dl.norm() / l_scale);
+  r.angular_momentum_vs_theory = std::max(r.angular_momentum_vs_theory, (dl - dl_theory).norm() / l_scale);
+  st += t, se += erel, stt += t * t, ste += t * erel, ++n;
+  if (plot) r.energy_curve.push_back({t, erel});
+}
 
-  Tally(const Scene& s, long long steps_) : scene(s), steps(steps_) {
-    const auto& p = s.particles;
-    e0 = energy(s, p.x, p.v);
-    p0 = momentum(p.inv_mass, p.v);
-    l0 = angular_momentum(p.inv_mass, p.x, p.v);
-    p_scale0 = momentum_scale(p.inv_mass, p.v);
-    l_scale0 = angular_momentum_scale(p.inv_mass, p.x, p.v);
-    r.steps = steps_;
-  }
-
-  void sample(long long i, double t, const Particles& p, const Vec3& dl_theory, bool plot) {
-    const std::vector<double>& w = scene.particles.inv_mass;
-    const double erel = std::abs(energy(scene, p.x, p.v) - e0) / e0;
-    r.final_rel_energy = erel;
-    double& half = i <= steps / 2 ? first_half : second_half;
-    half = std::max(half, erel);
-    r.momentum_error = std::max(r.momentum_error, (momentum(w, p.v) - p0).norm() / std::max(p_scale0, momentum_scale(w, p.v)));
-    const double l_scale = std::max(l_scale0, angular_momentum_scale(w, p.x, p.v));
-    const Vec3 dl = angular_momentum(w, p.x, p.v) - l0;
-    r.angular_momentum_error = std::max(r.angular_momentum_error, dl.norm() / l_scale);
-    r.angular_momentum_vs_theory = std::max(r.angular_momentum_vs_theory, (dl - dl_theory).norm() / l_scale);
-    st += t, se += erel, stt += t * t, ste += t * erel, ++n;
-    if (plot) r.energy_curve.push_back({t, erel});
-  }
-
-  InvariantRun finish() {
-    r.max_rel_energy = std::max(first_half, second_half);
-    r.growth_rate = n > 1 ? (n * ste - st * se) / (n * stt - st * st) : std::nan("");
-    r.last_over_first_half = second_half / std::max(first_half, 1e-300);
-    return r;
-  }
-};
-
-}  // namespace
+InvariantRun InvariantTally::finish() {
+  r.max_rel_energy = std::max(first_half, second_half);
+  r.growth_rate = n > 1 ? (n * ste - st * se) / (n * stt - st * st) : std::nan("");
+  r.last_over_first_half = second_half / std::max(first_half, 1e-300);
+  return r;
+}
 
 InvariantRun run_invariants(const Scene& scene, IntegratorKind kind, const Settings& s) {
   Scene sc = scene;
   sc.integrator = kind;
   Simulation sim(sc);
-  Tally tally(sc, s.steps);
+  InvariantTally tally(sc, s.steps);
   const std::optional<Tableau> tableau = runge_kutta_tableau(kind);
   Vec3 dl_theory = Vec3::Zero();
   for (long long i = 1; i <= s.steps; ++i) {
@@ -109,7 +94,7 @@ InvariantRun run_invariants(const Scene& scene, IntegratorKind kind, const Setti
       tally.r.unstable_at_step = sim.instability() ? sim.instability()->step : i;
       break;
     }
-    if (i % s.sample_every == 0) tally.sample(i, sim.time(), sim.particles(), dl_theory, i % s.plot_every == 0);
+    if (i % s.sample_every == 0) tally.sample(i, sim.time(), sim.particles().x, sim.particles().v, dl_theory, i % s.plot_every == 0);
   }
   return tally.finish();
 }

@@ -49,6 +49,25 @@ struct InvariantRun {
   std::vector<std::array<double, 2>> energy_curve;  ///< (t, relative energy error) every plot_every steps
 };
 
+/// The running statistics of one run, fed a sample at a time: built on the initial state, given
+/// the state after step i (time t) with the angular momentum change theory predicts up to it
+/// (zero when it predicts none), finished into the run's measurements.
+struct InvariantTally {
+  const Scene& scene;
+  long long steps;
+  double e0 = 0.0, p_scale0 = 0.0, l_scale0 = 0.0;
+  Vec3 p0 = Vec3::Zero(), l0 = Vec3::Zero();
+  double first_half = 0.0, second_half = 0.0;
+  double st = 0, se = 0, stt = 0, ste = 0;
+  long long n = 0;
+  InvariantRun r;
+
+  InvariantTally(const Scene& s, long long steps);
+  void sample(long long i, double t, const std::vector<Vec3>& x, const std::vector<Vec3>& v, const Vec3& dl_theory,
+              bool plot);
+  InvariantRun finish();
+};
+
 /// Runs core with `kind` on `scene` for s.steps steps (stopping at an unstable step), sampling
 /// every s.sample_every steps; the angular momentum theory is summed over every step.
 InvariantRun run_invariants(const Scene& scene, IntegratorKind kind, const Settings& s);

@@ -23,20 +23,39 @@ std::string method_markdown(const Settings& s, double band) {
       s.h0, s.halvings, s.min_halvings, s.agree, s.roundoff_floor, s.too_big, band);
 }
 
+namespace {
+/// "2" or "–" (claims no order).
+std::string claims(double order) { return order > 0.0 ? fmt::format("{:g}", order) : "–"; }
+}  // namespace
+
+std::string outside_markdown(const std::vector<OrderEngine>& engines) {
+  std::string list;
+  for (const OrderEngine& e : engines)
+    if (e.outside)
+      list += (list.empty() ? "" : "; ") + e.name +
+              (e.claimed_order > 0.0 ? fmt::format(" claims order {:g}, checked in the same band", e.claimed_order)
+                                     : std::string(" claims no order: its fit is reported, not checked"));
+  if (list.empty()) return "";
+  return "Outside engines (doors in the report's \"Outside engines\" table): " + list +
+         ". Each run of an outside engine takes its T/h steps in one call of its door (one round trip for a "
+         "process), and its wall times below include that call. A scene an engine refuses fails its check with "
+         "\"not modelled by\" and its reason.\n\n";
+}
+
 std::string fit_table(const Problem& p, const std::vector<EngineRuns>& runs) {
   std::string md = fmt::format("### {}\n\n{}; T = {} s.\n\n", p.name, p.about, p.T);
   md += "| engine | claims | fitted order | range h | observed orders per halving | round-off below h | excluded above h |\n"
         "|---|---:|---:|---|---|---:|---:|\n";
   for (const EngineRuns& r : runs) {
     if (!r.error.empty()) {
-      md += fmt::format("| {} | {:g} | – | – | failed: {} | – | – |\n", r.engine, r.claimed_order, r.error);
+      md += fmt::format("| {} | {} | – | – | failed: {} | – | – |\n", r.engine, claims(r.claimed_order), r.error);
       continue;
     }
     std::string obs;
     for (double o : r.fit.observed) obs += std::isfinite(o) ? fmt::format("{:.2f} ", o) : "– ";
     const std::string range =
         r.fit.first >= 0 ? fmt::format("{:.3g} … {:.3g}", r.samples[r.fit.first].h, r.samples[r.fit.last].h) : "none";
-    md += fmt::format("| {} | {:g} | {:.3f} | {} | {}| {} | {} |\n", r.engine, r.claimed_order, r.fit.slope, range, obs,
+    md += fmt::format("| {} | {} | {:.3f} | {} | {}| {} | {} |\n", r.engine, claims(r.claimed_order), r.fit.slope, range, obs,
                       r.fit.roundoff_below_h > 0 ? fmt::format("{:.3g}", r.fit.roundoff_below_h) : "–",
                       r.fit.unstable_above_h > 0 ? fmt::format("{:.3g}", r.fit.unstable_above_h) : "–");
   }
@@ -115,7 +134,7 @@ io::Json runs_json(const EngineRuns& r) {
     js.push_back({{"h", s.h}, {"error", std::isfinite(s.error) ? io::Json(s.error) : io::Json(nullptr)}});
   const bool fitted = r.fit.first >= 0;
   return {{"samples", js},
-          {"claimed_order", r.claimed_order},
+          {"claimed_order", r.claimed_order > 0.0 ? io::Json(r.claimed_order) : io::Json(nullptr)},
           {"fitted_order", std::isfinite(r.fit.slope) ? io::Json(r.fit.slope) : io::Json(nullptr)},
           {"range", fitted ? io::Json({r.samples[r.fit.first].h, r.samples[r.fit.last].h}) : io::Json(nullptr)},
           {"error", r.error.empty() ? io::Json(nullptr) : io::Json(r.error)}};

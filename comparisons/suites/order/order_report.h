@@ -23,6 +23,9 @@ struct EngineRuns {
 
 /// The method paragraph: steps, fit rules and the band, all from the run's settings.
 std::string method_markdown(const Settings& s, double band);
+/// What the report says about the outside engines among `engines` ("" when none): their claims and
+/// that their wall times include their door's calls.
+std::string outside_markdown(const std::vector<OrderEngine>& engines);
 /// The fit table of one problem (one row per engine).
 std::string fit_table(const Problem& p, const std::vector<EngineRuns>& runs);
 /// The error-vs-step and error-vs-time data file and plot of one problem under ctx.out_dir/order;

@@ -50,7 +50,6 @@ StableStep find_max_stable_step(const std::function<bool(double)>& stable, doubl
   return r;
 }
 
-namespace {
 Scene oscillator_scene(IntegratorKind k, double ks, double m, double h) {
   Scene s;
   s.integrator = k;
@@ -60,7 +59,6 @@ Scene oscillator_scene(IntegratorKind k, double ks, double m, double h) {
   s.forces.springs.push_back(Spring{0, 1, ks, 0.0, 0.0});
   return s;
 }
-}  // namespace
 
 long long steps_for(double periods, double omega, double h) {
   return static_cast<long long>(std::ceil(periods * 2.0 * kPi / (omega * h)));

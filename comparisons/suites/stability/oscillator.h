@@ -25,6 +25,10 @@ struct StableStep {
 StableStep find_max_stable_step(const std::function<bool(double h)>& stable, double h_start, double rel_tol,
                                 int max_doublings = 40, int max_halvings = 40);
 
+/// The oscillator's scene: a pinned particle at the origin and a particle of mass m released at rest
+/// at (1, 0, 0), joined by a zero-rest-length spring of stiffness ks; integrator k, step h.
+Scene oscillator_scene(IntegratorKind k, double ks, double m, double h);
+
 /// One run of the oscillator: a particle of mass m on a zero-rest-length spring of stiffness ks to
 /// a pinned particle at the origin (force -ks x: exactly linear in every direction), released at
 /// rest 1 m away along x, for ceil(periods 2 pi / (omega h)) steps or until |x| exceeds

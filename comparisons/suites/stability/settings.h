@@ -58,6 +58,16 @@ struct TunnellingSettings {
   long long min_steps = 20;
 };
 
+/// Outside dynamics engines (--plugin, --engine-cmd): the largest stable step of the same
+/// oscillator on the quick grid's cells, by the same bisection. Their runs are shorter (a process
+/// engine pays a round trip per period) and "stable at h" is checked once per period.
+struct OutsideSettings {
+  double periods = 100.0;  ///< per run (the amplitude bound is the suite's)
+  int max_halvings = 8;    ///< no stable step down to 2^-8 / omega: reported as none
+  std::vector<double> stiffnesses = {1e-2, 1e1, 1e4};
+  std::vector<double> masses = {1e-3, 1e0, 1e3};
+};
+
 struct Settings {
   /// "Stable at h": a run of `periods` periods (2 pi / omega each) at step h stays finite and its
   /// displacement from equilibrium never exceeds `amplitude_bound` times the initial one.
@@ -92,6 +102,7 @@ struct Settings {
   NearZeroSettings near_zero;
   RestingSettings resting;
   TunnellingSettings tunnelling;
+  OutsideSettings outside;
 };
 
 /// The suite's settings, the smaller grid and fewer horizons with --quick (the checks are the same).

@@ -1,5 +1,6 @@
 #include "comparisons/suites/stability/stability_suite.h"
 
+#include "comparisons/engines/outside/outside_engines.h"
 #include "comparisons/suites/stability/checks.h"
 #include "comparisons/suites/stability/extremes_notes.h"
 #include "comparisons/suites/stability/stability_report.h"
@@ -14,6 +15,12 @@ Plan make_plan(const SuiteContext& ctx, Settings s, std::vector<ExtremeGroup> gr
   plan.layout = layout(s, groups.size());
   plan.checks = declare_checks(s, groups, *ctx.tolerances);
   plan.bands = verdict_bands(*ctx.tolerances);
+  std::vector<outside::OutsideEnginePtr> engines;
+  if (ctx.outside)
+    for (const auto& e : ctx.outside->with(&outside::Capabilities::dynamics))
+      if (ctx.selects(e->name())) engines.push_back(e);
+  plan.outside = outside_plan(s, std::move(engines));
+  declare_outside_checks(plan.checks, plan.outside, *ctx.tolerances);
   plan.settings = std::move(s);
   plan.groups = std::move(groups);
   return plan;
@@ -91,6 +98,8 @@ SuiteResult assemble(const Plan& plan_in, const std::vector<io::Json>& results) 
   std::string md = settings_markdown(plan.settings) + method_markdown(plan.settings);
   md += oscillator_tables(plan, results, res.data);
   md += extremes(plan, results, res.data);
+  const std::vector<io::Json> outside(results.begin() + static_cast<std::ptrdiff_t>(case_count(plan.layout)), results.end());
+  md += outside_tables(plan.outside, outside, plan.checks, res.data);
   res.markdown = md;
   res.checks = plan.checks.finish();
   return res;
@@ -103,8 +112,12 @@ namespace tecido::suites {
 Sweep stability_sweep_for(const SuiteContext& ctx, stability::Settings s, std::vector<stability::ExtremeGroup> groups) {
   auto plan = std::make_shared<const stability::Plan>(stability::make_plan(ctx, std::move(s), std::move(groups)));
   Sweep sweep;
-  sweep.cases = stability::case_count(plan->layout);
-  sweep.run_case = [plan](std::size_t k) { return stability::run_case(plan->settings, plan->groups, plan->layout, k); };
+  const std::size_t own = stability::case_count(plan->layout);
+  sweep.cases = own + plan->outside.cases();
+  sweep.run_case = [plan, own](std::size_t k) {
+    if (k >= own) return stability::run_outside_case(plan->outside, k - own);
+    return stability::run_case(plan->settings, plan->groups, plan->layout, k);
+  };
   sweep.assemble = [plan](const std::vector<io::Json>& results) { return stability::assemble(*plan, results); };
   return sweep;
 }

@@ -11,11 +11,14 @@
 /// predicted values), oscillator.* (the runs and the bisection), one file per group of extremes
 /// (offset, mass_ratio, near_zero, resting, tunnelling; extremes.* their common result), cases.*
 /// (the case index and table), checks.* (the declared checks), value_range.* (min/max that keep a
-/// missing value), tables.* (the tables from the case results), stability_report.* and
-/// extremes_notes.* (the prose); this file makes the plan, the sweep and assembles.
+/// missing value), tables.* (the tables from the case results), outside_stability.* (outside
+/// dynamics engines from --plugin and --engine-cmd, their cases after the suite's own),
+/// stability_report.* and extremes_notes.* (the prose); this file makes the plan, the sweep and
+/// assembles.
 #include "comparisons/suites/check.h"
 #include "comparisons/suites/stability/cases.h"
 #include "comparisons/suites/stability/extremes.h"
+#include "comparisons/suites/stability/outside_stability.h"
 #include "comparisons/suites/stability/settings.h"
 #include "comparisons/suites/suite.h"
 #include "comparisons/suites/sweep.h"
@@ -32,8 +35,10 @@ struct Plan {
   Layout layout;
   CheckList checks;
   VerdictBands bands;
+  OutsidePlan outside;  ///< outside dynamics engines: their cases follow the layout's
 };
-/// Reads every band from ctx.tolerances (io::InputError when one is missing) and declares the checks.
+/// Reads every band from ctx.tolerances (io::InputError when one is missing) and declares the checks;
+/// the outside dynamics engines of ctx that ctx.selects() join after the suite's own cases.
 Plan make_plan(const SuiteContext& ctx, Settings s, std::vector<ExtremeGroup> groups);
 
 /// Every case's result (index order) into the suite's checks, Markdown and data. A case that threw

@@ -26,6 +26,12 @@ struct TradeoffEngine {
   /// max_steps largest swept steps (0 = no limit); the points outside are not run.
   int max_n = 0;
   int max_steps = 0;
+  /// Steps per call of advance() (0: step() by step()): an outside engine takes its steps this many
+  /// per call of its door, so that a process pays a round trip per chunk, not per step. The stray
+  /// check runs after each chunk; a failure is reported at the chunk's last step.
+  long long door_chunk = 0;
+  /// How an outside engine is reached (OutsideEngine::door()); empty for built-in engines.
+  std::string door;
 
   /// `scene` (its dt ignored) from its initial state at step h for round(seconds / h) steps,
   /// through the guarded runner: failed at a non-finite state or a node more than stray_limit [m]

@@ -27,7 +27,9 @@ Point measured(const TradeoffEngine& e, std::size_t ei, std::size_t j, double h,
   std::optional<std::vector<Vec3>> x = positions_of(result);
   if (!x) {
     const std::string reason = result.at("reason").get<std::string>();
-    p.status = "unstable (" + (reason.empty() ? std::string("failed") : reason) + ")";
+    const std::string not_built = "not built: ";  // the engine refused the scene or could not be built
+    if (reason.rfind(not_built, 0) == 0) p.status = reason.substr(not_built.size());
+    else p.status = "unstable (" + (reason.empty() ? std::string("failed") : reason) + ")";
     return p;
   }
   p.x = std::move(*x);

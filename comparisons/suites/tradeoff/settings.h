@@ -22,6 +22,15 @@ struct BulletRange {
   int max_steps = 3;           ///< h0, h0/2, h0/4
 };
 
+/// How far outside engines (--plugin, --engine-cmd) are run: cloths of at most max_side^2 nodes,
+/// at every swept step (max_steps = 0; explicit methods diverge at the largest ones, so a shorter
+/// range could leave an engine without a single point). A process engine in a scripting language
+/// steps orders of magnitude slower than core: its run takes minutes even so.
+struct OutsideRange {
+  int max_side = 16;
+  int max_steps = 0;  ///< 0: every swept step
+};
+
 /// How the classic soft body's kLST is calibrated for each (cloth, step, sweeps) it runs at
 /// (reference/klst_calibration.h): settling damping at a fixed rate, a rest speed, a sag match
 /// and a time limit. A 1 % sag match (2.5 mm on the 16^2 curtain's 0.25 m) is far inside the
@@ -49,6 +58,7 @@ struct Settings {
   double timing_max_total = 0.25;
   int timing_max_repeats = 10;
   BulletRange bullet;
+  OutsideRange outside;
   ClassicCalibration classic;
 };
 

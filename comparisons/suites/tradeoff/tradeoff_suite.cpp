@@ -2,7 +2,9 @@
 
 #include "comparisons/suites/tradeoff/cases.h"
 #include "comparisons/suites/tradeoff/curtain.h"
+#include "comparisons/engines/outside/outside_engines.h"
 #include "comparisons/suites/tradeoff/findings.h"
+#include "comparisons/suites/tradeoff/outside_engines.h"
 #include "comparisons/suites/tradeoff/points.h"
 #include "comparisons/suites/tradeoff/size_analysis.h"
 #include "comparisons/suites/tradeoff/theory.h"
@@ -133,13 +135,14 @@ void record(CheckList& checks, const Plan& plan, const SizeAnalysis& a) {
                    "rerun: max |x - x_rerun| over nodes [m], bit-identical = 0");
     checks.set(name, pt.rerun_diff);
   }
+  record_outside_checks(checks, a, plan.engines);
 }
 
 SuiteResult assemble(const Plan& plan, const std::vector<io::Json>& results) {
   SuiteResult res;
   res.name = "tradeoff";
   CheckList checks = plan.checks;
-  std::string md = method_markdown(plan.settings);
+  std::string md = method_markdown(plan.settings) + outside_markdown(plan.engines);
   std::vector<SizeAnalysis> sizes;
   for (std::size_t si = 0; si < plan.settings.sizes.size(); ++si) {
     sizes.push_back(analyse(plan, si, results));
@@ -161,12 +164,16 @@ Sweep tradeoff_sweep(const SuiteContext& ctx) {
   plan->ctx = ctx;
   plan->settings = settings(ctx.quick);
   plan->engines = tradeoff_engines(plan->settings);
+  if (ctx.outside)
+    for (const auto& e : ctx.outside->with(&outside::Capabilities::dynamics))
+      if (ctx.selects(e->name())) plan->engines.push_back(outside_tradeoff_engine(e, plan->settings));
   for (const Size& z : plan->settings.sizes) {
     plan->scenes.push_back(hanging_cloth(z.n));
     plan->swept.push_back(swept_steps(plan->scenes.back(), z.steps));
   }
   plan->layout = case_layout(plan->settings.sizes, plan->engines.size());
   plan->checks = declare_tradeoff_checks(plan->settings, plan->engines, *ctx.tolerances);
+  declare_outside_checks(plan->checks, plan->settings, plan->engines, *ctx.tolerances);
   Sweep s;
   s.cases = plan->layout.cases;
   s.run_case = [plan](std::size_t k) { return run_case(*plan, k); };

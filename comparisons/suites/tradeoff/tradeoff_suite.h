@@ -7,11 +7,12 @@
 /// accurate), plots cost against error, and reruns every front point to check that it is
 /// bit-for-bit reproducible.
 ///
-/// Layout: settings.h (what runs), curtain.* (the scene), theory.* (the step sweep, the
-/// reference's error estimate), engines.* and bullet_engines.* (who runs), reference_solution.*
-/// (the untimed runs), cases.* (case indexing and the two case groups), points.* and pareto.* (the
-/// cost/error plane and its front), distances.*, size_analysis.*, tradeoff_report.* (tables, data
-/// files, plots), findings.* (prose from the tables); this file declares the checks and assembles.
+/// Layout: settings.h (what runs), curtain.* (the scene), theory.* (the step sweep, the reference's
+/// error estimate), engines.*, bullet_engines.* and outside_engines.* (who runs; outside engines
+/// from --plugin and --engine-cmd), reference_solution.* (the untimed runs), cases.* (case indexing
+/// and the two case groups), points.* and pareto.* (the cost/error plane and its front),
+/// distances.*, size_analysis.*, tradeoff_report.* (tables, data files, plots), findings.* (prose
+/// from the tables); this file declares the checks and assembles.
 ///
 /// Checks: per size, conditioning, reference_error, reference_order, front_size and (reference
 /// build, sizes the twin runs on) the twin's distance to core's symplectic Euler are declared from

@@ -1,8 +1,11 @@
 #include "comparisons/suites/tritri/check_plan.h"
 
+#include <algorithm>
+
 namespace tecido::suites::tritri {
 
-CheckScope check_scope(const std::string& engine, const std::string& referee) {
+CheckScope check_scope(const std::string& engine, const std::string& referee, bool outside) {
+  if (outside) return CheckScope::Outside;
   if (engine == "core") return CheckScope::EveryFamily;
   // The seed's two tests (rotation test, Moller-Trumbore on edges with the seed's AND) are kept as
   // the seed wrote them, misses included: the report shows how they fare, nothing requires them to
@@ -14,6 +17,7 @@ CheckScope check_scope(const std::string& engine, const std::string& referee) {
 bool is_checked(CheckScope scope, const Family& family) {
   switch (scope) {
     case CheckScope::EveryFamily: return true;
+    case CheckScope::Outside: return true;
     case CheckScope::RandomOnly: return family.random;
     case CheckScope::Reported: return false;
   }
@@ -24,14 +28,19 @@ std::string check_name(const std::string& engine, const std::string& family) {
   return "tritri/" + engine + "/agreement/" + family;
 }
 
+std::string tolerance_key(const std::string& engine, CheckScope scope) {
+  return scope == CheckScope::Outside ? "/tritri/outside_min_agreement" : "/tritri/" + engine + "_min_agreement";
+}
+
 CheckList declare_checks(const std::vector<Family>& families, const std::vector<std::string>& engines,
-                         const std::string& referee, const Tolerances& tol) {
+                         const std::string& referee, const Tolerances& tol, const std::vector<std::string>& outside) {
   CheckList checks;
   for (const std::string& e : engines) {
-    const CheckScope scope = check_scope(e, referee);
+    const bool is_outside = std::find(outside.begin(), outside.end(), e) != outside.end();
+    const CheckScope scope = check_scope(e, referee, is_outside);
     for (const Family& f : families) {
       if (!is_checked(scope, f)) continue;
-      checks.declare(check_name(e, f.name), tol.at_least("/tritri/" + e + "_min_agreement", 1.0),
+      checks.declare(check_name(e, f.name), tol.at_least(tolerance_key(e, scope), 1.0),
                      "share of " + f.name + " pairs where " + e + " agrees with " + referee);
     }
   }

@@ -1,6 +1,7 @@
 #pragma once
 /// One case of the `tritri` suite: the exact referee and every engine on one block of one
 /// family's pairs (case_index.h), each engine timed over the whole block (CPU time of the thread).
+#include "comparisons/engines/outside/outside_engine.h"
 #include "comparisons/engines/tri_tri_engines.h"
 #include "comparisons/io/json_reader.h"
 #include "comparisons/suites/tritri/case_index.h"
@@ -10,12 +11,14 @@
 
 namespace tecido::suites::tritri {
 
-/// Generates the pairs of `range` (families.h: family_pair with `seed`), asks `referee` and each
-/// of `engines`. Result: {"intersecting": pairs the referee says intersect, "engines": [{"name",
-/// "seconds": thread CPU time over the block, "tally": [agree, pairs, no answer], "disagree": [k, ...]
+/// Generates the pairs of `range` (families.h: family_pair with `seed`), asks `referee`, each of
+/// `engines`, then each of `outside` (the whole block in one batch through its door). Result:
+/// {"intersecting": pairs the referee says intersect, "engines": [{"name", "seconds": thread CPU
+/// time over the block (for a process engine, plus the wall time of its round trips: its work is
+/// not this thread's, and the door is part of its cost), "tally": [agree, pairs, no answer], "disagree": [k, ...]
 /// (at most `max_disagreements`)}, ...]}. Throws what a generator or an engine throws.
 io::Json run_tritri_case(std::uint64_t seed, const std::vector<Family>& families, const CaseRange& range,
                          const TriTriEngine& referee, const std::vector<TriTriEngine>& engines,
-                         std::size_t max_disagreements);
+                         std::size_t max_disagreements, const std::vector<outside::OutsideEnginePtr>& outside = {});
 
 }  // namespace tecido::suites::tritri

@@ -4,6 +4,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace tecido::suites::tritri {
@@ -18,6 +19,24 @@ std::string method_markdown(const Settings& s, std::uint64_t seed, const std::st
       s.random_pairs, s.pairs_per_family, seed, s.block, referee);
   for (const Family& f : families) md += fmt::format("- `{}`: {}\n", f.name, f.about);
   return md + "\n";
+}
+
+std::string outside_markdown(const std::vector<outside::OutsideEnginePtr>& outside) {
+  if (outside.empty()) return "";
+  std::string names, processes;
+  for (const auto& e : outside) {
+    names += (names.empty() ? "`" : ", `") + e->name() + "`";
+    if (e->is_process()) processes += (processes.empty() ? "`" : ", `") + e->name() + "`";
+  }
+  std::string md = "Outside engines " + names +
+                   " (doors in the report's \"Outside engines\" table) answer each case's block in one batch through "
+                   "their door and are checked on every family against `/tritri/outside_min_agreement`.";
+  if (!processes.empty())
+    md += " The ns/pair of the process engines " + processes +
+          " is the case thread's CPU time (encoding the queries, decoding the answers) plus the wall time of their "
+          "round trips (pipes and the other process's work; waiting for a turn at the process excluded): the cost of "
+          "the door is part of it.";
+  return md + "\n\n";
 }
 
 namespace {
@@ -67,6 +86,7 @@ const char* scope_words(CheckScope scope) {
     case CheckScope::EveryFamily: return "checked on every family";
     case CheckScope::RandomOnly: return "checked on random pairs; adversarial rows reported";
     case CheckScope::Reported: return "reported, not checked";
+    case CheckScope::Outside: return "outside engine, checked on every family";
   }
   return "";
 }
@@ -74,12 +94,13 @@ const char* scope_words(CheckScope scope) {
 }  // namespace
 
 std::string conclusions_markdown(const std::vector<Family>& families, const AgreementTable& table,
-                                 const std::string& referee) {
+                                 const std::string& referee, const std::vector<std::string>& outside) {
   std::string md = "From this table:\n\n";
   for (std::size_t e = 0; e < table.engines.size(); ++e) {
     if (table.engines[e] == referee) continue;
-    md += fmt::format("- `{}` ({}): {}.\n", table.engines[e], scope_words(check_scope(table.engines[e], referee)),
-                      engine_findings(families, table, e));
+    const bool is_outside = std::find(outside.begin(), outside.end(), table.engines[e]) != outside.end();
+    md += fmt::format("- `{}` ({}): {}.\n", table.engines[e],
+                      scope_words(check_scope(table.engines[e], referee, is_outside)), engine_findings(families, table, e));
   }
   return md;
 }

@@ -2,6 +2,7 @@
 /// The `tritri` suite's report: the method paragraph, the agreement table, conclusions derived
 /// from that table, and the disagreement file's paragraph. Every number comes from the settings
 /// or from the run's AgreementTable.
+#include "comparisons/engines/outside/outside_engine.h"
 #include "comparisons/suites/tritri/agreement.h"
 #include "comparisons/suites/tritri/settings.h"
 
@@ -15,6 +16,10 @@ namespace tecido::suites::tritri {
 std::string method_markdown(const Settings& s, std::uint64_t seed, const std::string& referee,
                             const std::vector<Family>& families);
 
+/// The outside engines' paragraph ("" when none): they are checked on every family, and a process
+/// engine's ns/pair is wall time including its door's round trips.
+std::string outside_markdown(const std::vector<outside::OutsideEnginePtr>& outside);
+
 /// One row per engine (ns per random pair; agreeing / pairs per family), the referee's count of
 /// intersecting pairs on top. A family whose cases failed shows "failed" and its reason below.
 std::string agreement_table(const std::vector<Family>& families, const AgreementTable& table);
@@ -22,7 +27,7 @@ std::string agreement_table(const std::vector<Family>& families, const Agreement
 /// Per engine, what is checked and where it disagrees with the referee or gives no answer, read
 /// from `table`. (No timing: the prose of a merged report must equal the unsharded run's.)
 std::string conclusions_markdown(const std::vector<Family>& families, const AgreementTable& table,
-                                 const std::string& referee);
+                                 const std::string& referee, const std::vector<std::string>& outside = {});
 
 /// Where the disagreements went: `kept` of `found` pairs in `file`, and the command that reruns them.
 std::string disagreements_markdown(std::size_t kept, long found, const std::string& file);

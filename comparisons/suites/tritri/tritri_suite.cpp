@@ -1,5 +1,6 @@
 #include "comparisons/suites/tritri/tritri_suite.h"
 
+#include "comparisons/engines/outside/outside_engines.h"
 #include "comparisons/suites/tritri/agreement.h"
 #include "comparisons/suites/tritri/case_index.h"
 #include "comparisons/suites/tritri/check_plan.h"
@@ -25,37 +26,48 @@ struct Plan {
   std::uint64_t seed = 0;  ///< of the pairs
   std::vector<Family> families;
   std::vector<TriTriEngine> engines;
+  std::vector<outside::OutsideEnginePtr> outside;  ///< after `engines` in every case's results
   const TriTriEngine* referee = nullptr;  ///< into engines
   std::vector<tritri::CaseRange> cases;
   CheckList checks;
 };
 
+std::vector<std::string> outside_names(const Plan& plan) {
+  std::vector<std::string> names;
+  for (const auto& e : plan.outside) names.push_back(e->name());
+  return names;
+}
+
 std::vector<std::string> engine_names(const Plan& plan) {
   std::vector<std::string> names;
   for (const TriTriEngine& e : plan.engines) names.push_back(e.name);
+  for (auto& n : outside_names(plan)) names.push_back(std::move(n));
   return names;
 }
 
 std::shared_ptr<Plan> make_plan(const SuiteContext& ctx, const tritri::Settings& settings, std::vector<Family> families,
-                                std::vector<TriTriEngine> engines) {
+                                std::vector<TriTriEngine> engines, std::vector<outside::OutsideEnginePtr> outside) {
   auto plan = std::make_shared<Plan>();
   plan->settings = settings;
   plan->seed = substream(ctx.seed, 2);
   plan->families = std::move(families);
   plan->engines = std::move(engines);
+  plan->outside = std::move(outside);
   for (const TriTriEngine& e : plan->engines)
     if (e.name == kReferee) plan->referee = &e;
   if (!plan->referee) return plan;
   plan->cases = tritri::case_ranges(plan->settings, plan->families);
-  plan->checks = tritri::declare_checks(plan->families, engine_names(*plan), kReferee, *ctx.tolerances);
+  plan->checks =
+      tritri::declare_checks(plan->families, engine_names(*plan), kReferee, *ctx.tolerances, outside_names(*plan));
   return plan;
 }
 
 /// Each declared check gets its family's agreement, or fails with the family's error.
 void record(CheckList& checks, const Plan& plan, const AgreementTable& table) {
-  for (std::size_t e = 0; e < plan.engines.size(); ++e) {
+  const std::vector<std::string> names = engine_names(plan);
+  for (std::size_t e = 0; e < names.size(); ++e) {
     for (std::size_t f = 0; f < plan.families.size(); ++f) {
-      const std::string name = tritri::check_name(plan.engines[e].name, plan.families[f].name);
+      const std::string name = tritri::check_name(names[e], plan.families[f].name);
       if (!checks.declared(name)) continue;
       if (!table.error[f].empty()) {
         checks.fail(name, table.error[f]);
@@ -80,8 +92,8 @@ SuiteResult assemble(const Plan& plan, const SuiteContext& ctx, const std::vecto
   const auto kept = tritri::disagreement_pairs(plan.seed, plan.families, table, plan.settings.max_disagreements);
   tritri::write_disagreements(ctx.out_dir + "/" + kDisagreementFile, kept);
   res.markdown = tritri::method_markdown(plan.settings, ctx.seed, kReferee, plan.families) +
-                 tritri::agreement_table(plan.families, table) + "\n" +
-                 tritri::conclusions_markdown(plan.families, table, kReferee) +
+                 tritri::outside_markdown(plan.outside) + tritri::agreement_table(plan.families, table) + "\n" +
+                 tritri::conclusions_markdown(plan.families, table, kReferee, outside_names(plan)) +
                  tritri::disagreements_markdown(kept.size(), tritri::disagreements_found(table), kDisagreementFile);
   res.data = tritri::table_json(plan.families, table);
   res.checks = checks.finish();
@@ -91,13 +103,14 @@ SuiteResult assemble(const Plan& plan, const SuiteContext& ctx, const std::vecto
 }  // namespace
 
 Sweep tritri_sweep_for(const SuiteContext& ctx, const tritri::Settings& settings, std::vector<Family> families,
-                       std::vector<TriTriEngine> engines) {
-  std::shared_ptr<const Plan> plan = make_plan(ctx, settings, std::move(families), std::move(engines));
+                       std::vector<TriTriEngine> engines, std::vector<outside::OutsideEnginePtr> outside) {
+  std::shared_ptr<const Plan> plan =
+      make_plan(ctx, settings, std::move(families), std::move(engines), std::move(outside));
   Sweep s;
   s.cases = plan->cases.size();
   s.run_case = [plan](std::size_t k) {
     return tritri::run_tritri_case(plan->seed, plan->families, plan->cases.at(k), *plan->referee, plan->engines,
-                                   plan->settings.max_disagreements);
+                                   plan->settings.max_disagreements, plan->outside);
   };
   const SuiteContext c = ctx;
   s.assemble = [plan, c](const std::vector<io::Json>& results) { return assemble(*plan, c, results); };
@@ -105,7 +118,14 @@ Sweep tritri_sweep_for(const SuiteContext& ctx, const tritri::Settings& settings
 }
 
 Sweep tritri_sweep(const SuiteContext& ctx) {
-  return tritri_sweep_for(ctx, tritri::settings(ctx.quick), tritri::families(), tri_tri_engines());
+  std::vector<TriTriEngine> engines;
+  for (const TriTriEngine& e : tri_tri_engines())
+    if (e.name == kReferee || ctx.selects(e.name)) engines.push_back(e);
+  std::vector<outside::OutsideEnginePtr> outside;
+  if (ctx.outside)
+    for (const auto& e : ctx.outside->with(&outside::Capabilities::tri_tri))
+      if (ctx.selects(e->name())) outside.push_back(e);
+  return tritri_sweep_for(ctx, tritri::settings(ctx.quick), tritri::families(), std::move(engines), std::move(outside));
 }
 
 SuiteResult run_tritri_suite(const SuiteContext& ctx) { return run_sweep(&tritri_sweep, ctx, "tritri"); }

@@ -6,6 +6,7 @@
 /// case_index.* (pairs into cases), tritri_case.* (one case), agreement.* (the statistics),
 /// check_plan.* (the checks, declared before anything runs), disagreements.* (the pairs file),
 /// tritri_report.* (tables and prose); this file builds the sweep and assembles.
+#include "comparisons/engines/outside/outside_engine.h"
 #include "comparisons/engines/tri_tri_engines.h"
 #include "comparisons/suites/suite.h"
 #include "comparisons/suites/sweep.h"
@@ -16,12 +17,14 @@
 
 namespace tecido::suites {
 
-/// The suite as a sweep with `settings` over `families` and `engines`; the referee is the engine
-/// named "exact" (without one, no case runs and no check is declared: the report says so). Case k
-/// is case_ranges(...)[k]: every engine on one block of one family.
+/// The suite as a sweep with `settings` over `families`, `engines` and the `outside` engines
+/// (answering whole blocks through their doors, checked on every family); the referee is the
+/// engine named "exact" (without one, no case runs and no check is declared: the report says so).
+/// Case k is case_ranges(...)[k]: every engine on one block of one family.
 Sweep tritri_sweep_for(const SuiteContext& ctx, const tritri::Settings& settings, std::vector<tritri::Family> families,
-                       std::vector<TriTriEngine> engines);
-/// tritri_sweep_for with tritri::settings(ctx.quick), tritri::families() and every registered engine.
+                       std::vector<TriTriEngine> engines, std::vector<outside::OutsideEnginePtr> outside = {});
+/// tritri_sweep_for with tritri::settings(ctx.quick), tritri::families(), every registered engine
+/// and every outside engine answering tri_tri, those ctx.selects() (the referee always).
 Sweep tritri_sweep(const SuiteContext& ctx);
 SuiteResult run_tritri_suite(const SuiteContext& ctx);
 

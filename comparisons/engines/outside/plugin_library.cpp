@@ -1,0 +1,97 @@
+#include "comparisons/engines/outside/plugin_library.h"
+
+#include "comparisons/engines/outside/engine_error.h"
+
+#include <dlfcn.h>
+
+#include <set>
+
+namespace tecido::outside {
+
+namespace {
+
+std::string door_of(const std::string& path) { return "plug-in " + path; }
+
+/// Checks the engine table; throws EngineError naming the first problem.
+void check_table(const std::string& path, const tecido_plugin& t) {
+  const std::string door = door_of(path);
+  if (t.engine_count == 0 || t.engines == nullptr) throw EngineError(door, TECIDO_PLUGIN_ENTRY_SYMBOL, "names no engine");
+  if (t.engine_count > 1000) throw EngineError(door, TECIDO_PLUGIN_ENTRY_SYMBOL, "engine_count is absurd (over 1000)");
+  std::set<std::string> seen;
+  for (std::size_t k = 0; k < t.engine_count; ++k) {
+    const tecido_engine& e = t.engines[k];
+    const std::string where = "engines[" + std::to_string(k) + "]";
+    const std::string name = e.name ? e.name : "";
+    if (!valid_engine_name(name))
+      throw EngineError(door, where, "engine name \"" + name + "\" is not 1-64 of [A-Za-z0-9_.-]");
+    if (!seen.insert(name).second) throw EngineError(door, where, "engine name \"" + name + "\" appears twice");
+    const int dyn = (e.create != nullptr) + (e.step != nullptr) + (e.read != nullptr) + (e.destroy != nullptr);
+    if (dyn != 0 && dyn != 4)
+      throw EngineError(door, where, "engine \"" + name + "\": a dynamics engine needs all of create, step, read, destroy");
+    if (!(e.claimed_order >= 0.0 && e.claimed_order <= 100.0))
+      throw EngineError(door, where, "engine \"" + name + "\": claimed_order must be in [0, 100] (0 = none)");
+    if (!e.tri_tri && !e.segment_plane && !e.ccd_vertex_face && !e.ccd_edge_edge && dyn == 0)
+      throw EngineError(door, where, "engine \"" + name + "\" answers nothing (every function pointer is NULL)");
+  }
+}
+
+}  // namespace
+
+bool valid_engine_name(const std::string& name) {
+  if (name.empty() || name.size() > 64 || name[0] == '-') return false;
+  for (char c : name) {
+    const bool ok = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_' ||
+                    c == '.' || c == '-';
+    if (!ok) return false;
+  }
+  return true;
+}
+
+std::shared_ptr<PluginLibrary> PluginLibrary::load(const std::string& path) {
+  const std::string door = door_of(path);
+  dlerror();
+  void* handle = dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);
+  if (!handle) {
+    const char* why = dlerror();
+    throw EngineError(door, "dlopen", why ? why : "cannot be loaded");
+  }
+  dlerror();
+  void* sym = dlsym(handle, TECIDO_PLUGIN_ENTRY_SYMBOL);
+  if (!sym) {
+    dlclose(handle);
+    throw EngineError(door, TECIDO_PLUGIN_ENTRY_SYMBOL, "symbol not found (a plug-in exports it; include/tecido/plugin.h)");
+  }
+  using Entry = const tecido_plugin* (*)();
+  Entry entry;
+  static_assert(sizeof(entry) == sizeof(sym), "function and object pointers differ in size");
+  __builtin_memcpy(&entry, &sym, sizeof entry);  // POSIX: dlsym's pointer is the function's
+  const tecido_plugin* table = entry();
+  if (!table) {
+    dlclose(handle);
+    throw EngineError(door, TECIDO_PLUGIN_ENTRY_SYMBOL, "returned NULL");
+  }
+  if (table->abi_version != TECIDO_PLUGIN_ABI_VERSION) {
+    const std::string v = std::to_string(table->abi_version);
+    dlclose(handle);
+    throw EngineError(door, TECIDO_PLUGIN_ENTRY_SYMBOL,
+                      "ABI version mismatch: the plug-in was built for ABI " + v + ", this tecido speaks ABI " +
+                          std::to_string(TECIDO_PLUGIN_ABI_VERSION) + " (rebuild it against this include/tecido/plugin.h)");
+  }
+  try {
+    check_table(path, *table);
+  } catch (...) {
+    dlclose(handle);
+    throw;
+  }
+  return std::shared_ptr<PluginLibrary>(new PluginLibrary(path, handle, table));
+}
+
+PluginLibrary::~PluginLibrary() {
+  if (handle_) dlclose(handle_);
+}
+
+std::string PluginLibrary::door() const {
+  return door_of(path_) + " (ABI " + std::to_string(table_->abi_version) + ")";
+}
+
+}  // namespace tecido::outside

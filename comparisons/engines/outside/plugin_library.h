@@ -1,0 +1,39 @@
+#pragma once
+/// A plug-in shared library, loaded with dlopen: its entry (TECIDO_PLUGIN_ENTRY_SYMBOL), its ABI
+/// version checked against TECIDO_PLUGIN_ABI_VERSION, and its engine table checked (names, and a
+/// dynamics engine having all four of create/step/read/destroy). Any failure is one EngineError
+/// naming the path and what failed: the library cannot be loaded (dlerror's text), the symbol is
+/// missing, the version differs, the table is malformed. The library stays loaded while a
+/// PluginLibrary (shared by its engines) lives.
+#include <tecido/plugin.h>
+
+#include <memory>
+#include <string>
+
+namespace tecido::outside {
+
+class PluginLibrary {
+ public:
+  /// Loads `path` (a path with a '/' is opened as given; a bare name is searched as dlopen does).
+  static std::shared_ptr<PluginLibrary> load(const std::string& path);
+  ~PluginLibrary();
+  PluginLibrary(const PluginLibrary&) = delete;
+  PluginLibrary& operator=(const PluginLibrary&) = delete;
+
+  const std::string& path() const { return path_; }
+  const tecido_plugin& table() const { return *table_; }
+  /// "plug-in PATH (ABI N)".
+  std::string door() const;
+
+ private:
+  PluginLibrary(std::string path, void* handle, const tecido_plugin* table)
+      : path_(std::move(path)), handle_(handle), table_(table) {}
+  std::string path_;
+  void* handle_ = nullptr;
+  const tecido_plugin* table_ = nullptr;
+};
+
+/// Whether `name` is a valid engine name: 1 to 64 of [A-Za-z0-9_.-], not starting with '-'.
+bool valid_engine_name(const std::string& name);
+
+}  // namespace tecido::outside

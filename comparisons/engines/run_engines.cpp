@@ -1,0 +1,78 @@
+#include "comparisons/engines/run_engines.h"
+
+#include "comparisons/engines/segment_plane_engines.h"
+#include "comparisons/engines/self_collision_engines.h"
+#include "comparisons/engines/tri_tri_engines.h"
+#include "core/dynamics/integrator.h"
+
+#include <stdexcept>
+
+namespace tecido {
+
+namespace {
+
+std::vector<std::string> outside_names(const outside::OutsideEngines* outside, bool outside::Capabilities::*cap) {
+  std::vector<std::string> out;
+  if (outside)
+    for (const auto& e : outside->with(cap)) out.push_back(e->name());
+  return out;
+}
+
+outside::OutsideEnginePtr outside_engine(const std::string& name, const outside::OutsideEngines* outside,
+                                         bool outside::Capabilities::*cap) {
+  auto e = outside ? outside->find(name) : nullptr;
+  if (!e || !(e->capabilities().*cap)) throw std::invalid_argument("no engine \"" + name + "\" answers that question");
+  return e;
+}
+
+}  // namespace
+
+std::vector<std::string> tri_tri_engine_names(const outside::OutsideEngines* outside) {
+  std::vector<std::string> names;
+  for (const auto& e : tri_tri_engines()) names.push_back(e.name);
+  for (auto& n : outside_names(outside, &outside::Capabilities::tri_tri)) names.push_back(std::move(n));
+  return names;
+}
+
+std::vector<std::optional<bool>> tri_tri_answers(const std::string& name, const std::vector<outside::TriTriQuery>& queries,
+                                                 const outside::OutsideEngines* outside) {
+  if (const TriTriEngine* e = find_tri_tri_engine(name)) {
+    std::vector<std::optional<bool>> out;
+    out.reserve(queries.size());
+    for (const auto& q : queries) out.push_back(e->test(q.a, q.b));
+    return out;
+  }
+  return outside_engine(name, outside, &outside::Capabilities::tri_tri)->tri_tri(queries);
+}
+
+std::vector<std::string> segment_plane_engine_names(const outside::OutsideEngines* outside) {
+  std::vector<std::string> names;
+  for (const auto& e : segment_plane_engines()) names.push_back(e.name);
+  for (auto& n : outside_names(outside, &outside::Capabilities::segment_plane)) names.push_back(std::move(n));
+  return names;
+}
+
+std::vector<std::optional<SegmentPlaneHit>> segment_plane_answers(const std::string& name,
+                                                                  const std::vector<outside::SegmentPlaneQuery>& queries,
+                                                                  const outside::OutsideEngines* outside) {
+  if (const SegmentPlaneEngine* e = find_segment_plane_engine(name)) {
+    std::vector<std::optional<SegmentPlaneHit>> out;
+    out.reserve(queries.size());
+    for (const auto& q : queries) out.push_back(e->test(q.plane, q.from, q.to));
+    return out;
+  }
+  return outside_engine(name, outside, &outside::Capabilities::segment_plane)->segment_plane(queries);
+}
+
+std::vector<std::string> builtin_engine_names() {
+  std::vector<std::string> names;
+  for (const auto& e : tri_tri_engines()) names.push_back(e.name);
+  for (const auto& e : segment_plane_engines()) names.push_back(e.name);
+  for (const auto& e : self_collision_engines()) names.push_back(e.name);
+  for (IntegratorKind k : {IntegratorKind::Euler, IntegratorKind::Symplectic, IntegratorKind::Midpoint, IntegratorKind::RK4})
+    names.push_back(integrator_name(k));
+  names.push_back("exact");
+  return names;
+}
+
+}  // namespace tecido
