@@ -153,5 +153,25 @@ TEST(CliOutsideCcd, SuiteChecksThePythonEngineOnRandomMotion) {
   std::filesystem::remove_all(dir);
 }
 
+TEST(CliOutsideCcd, AKindTheEngineDoesNotModelIsNullAndReported) {
+  const auto dir = testing::temp_dir("outside-ccd-kind");
+  const std::string plugin = " --plugin " + quoted(testing::kLiarPlugin);  // its sampled-ccd: vertex-face only
+  const auto r = run_cli("ccd --queries " + quoted(hand_file(dir)) + plugin + " --engines exact,sampled-ccd --json");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const json out = json::parse(r.out);
+  EXPECT_TRUE(out["results"][1]["sampled-ccd"].is_object());  // vertex-face
+  EXPECT_TRUE(out["results"][2]["sampled-ccd"].is_null());    // edge-edge
+  EXPECT_NE(r.err.find("sampled-ccd: 0 false positives, 1 false negatives of 2 queries; no answer on 2"),
+            std::string::npos) << r.err;
+  const auto s = run_cli("suite ccd --quick --threads 2" + plugin + " --engines sampled-ccd --out " + quoted(dir.string()));
+  EXPECT_EQ(s.code, 1) << s.err;  // its vertex-face misses still fail
+  const json report = json::parse(testing::slurp(dir / "report.json"));
+  EXPECT_NE(find_check(report, "ccd/vertex-face/random/sampled-ccd/false_negative_rate"), nullptr);
+  EXPECT_EQ(find_check(report, "ccd/edge-edge/random/sampled-ccd/false_negative_rate"), nullptr);
+  EXPECT_EQ(find_check(report, "ccd/edge-edge/random/sampled-ccd/unanswered_rate"), nullptr);
+  EXPECT_NE(testing::slurp(dir / "report.md").find("edge-edge: not modelled by sampled-ccd."), std::string::npos);
+  std::filesystem::remove_all(dir);
+}
+
 }  // namespace
 }  // namespace tecido
