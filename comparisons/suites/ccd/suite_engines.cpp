@@ -40,7 +40,8 @@ std::vector<std::optional<CcdAnswer>> answer_block(const SuiteEngine& e, const s
   for (std::size_t i = 0; i < queries.size(); ++i)
     if (e.models(queries[i].q.kind)) asked.push_back(queries[i].q), index.push_back(i);
   const double w0 = outside::door_seconds_on_this_thread(), c0 = thread_cpu_seconds();
-  const std::vector<std::optional<CcdAnswer>> answers = asked.empty() ? decltype(answers){} : e.outside->ccd(asked);
+  std::vector<std::optional<CcdAnswer>> answers;
+  if (!asked.empty()) answers = e.outside->ccd(asked);
   seconds = thread_cpu_seconds() - c0 + (e.outside->is_process() ? outside::door_seconds_on_this_thread() - w0 : 0.0);
   if (answers.size() != asked.size()) throw std::runtime_error(e.name + " answered a different number of queries");
   for (std::size_t k = 0; k < index.size(); ++k) got[index[k]] = answers[k];
