@@ -1,5 +1,8 @@
 // tecido ccd --queries FILE.json [--engines core,exact,fcl,bullet] --json
 // tecido ccd --queries FILE.csv --csv-kind vertex-face|edge-edge [--engines ...] --json
+// Outside engines (--plugin PATH, --engine-cmd NAME=CMD) answer every query in one batch through
+// their door, on the nearest doubles of rational queries (counted apart like fcl's), and null on a
+// kind they do not model.
 // Prints {"results":[{"id","<engine>":{"hit":bool,"toi":t|null}|null, ...}]} (null: the engine
 // cannot answer this query), engines in the order named. When the queries carry a truth (the CSV's
 // ground-truth column, or "truth" in a JSON file such as the ccd suite's disagreements), each
@@ -8,6 +11,8 @@
 // answers on the rationals, the others on the nearest doubles, and their errors on rounded queries
 // are counted apart (they answered a slightly different query). Formats: comparisons/io/ccd_queries.h.
 #include "comparisons/cli/commands.h"
+#include "comparisons/cli/outside_options.h"
+#include "comparisons/engines/run_engines.h"
 #include "comparisons/engines/ccd_engines.h"
 #include "comparisons/io/ccd_queries.h"
 #include "comparisons/io/input_error.h"
@@ -69,32 +74,72 @@ OJson answer_json(const std::optional<CcdAnswer>& a) {
   return OJson{{"hit", a->hit}, {"toi", a->hit ? OJson(a->toi) : OJson(nullptr)}};
 }
 
-int run_ccd(const std::string& path, const std::string& csv_kind, const std::string& engine_list) {
-  std::vector<std::string> known;
-  for (const auto& e : ccd_engines()) known.push_back(e.name);
-  const auto names = parse_engine_list(engine_list, known, "ccd");
-  std::vector<const CcdEngine*> engines;
-  for (const auto& n : names) engines.push_back(find_ccd_engine(n));
+/// One engine of the run: built-in (answers entry by entry, on the rationals where it can) or
+/// outside (answers the whole file in one batch through its door).
+struct Answerer {
+  std::string name;
+  const CcdEngine* builtin = nullptr;
+  outside::OutsideEnginePtr outside;
+  bool on_rationals() const { return builtin && builtin->test_rational; }
+};
+
+std::vector<Answerer> answerers(const std::vector<std::string>& names, const outside::OutsideEngines& outside) {
+  std::vector<Answerer> out;
+  for (const auto& n : names) {
+    Answerer a{n, find_ccd_engine(n), nullptr};
+    if (!a.builtin) a.outside = outside.find(n);
+    out.push_back(std::move(a));
+  }
+  return out;
+}
+
+/// Every answer of engine `a` to the prepared entries, in order.
+std::vector<std::optional<CcdAnswer>> answer_all(const Answerer& a, const std::vector<io::CcdQueryEntry>& entries) {
+  if (a.builtin) {
+    std::vector<std::optional<CcdAnswer>> out;
+    out.reserve(entries.size());
+    for (const auto& e : entries) out.push_back(answer_ccd_entry(*a.builtin, e));
+    return out;
+  }
+  std::vector<CcdQuery> queries;
+  queries.reserve(entries.size());
+  for (const auto& e : entries) queries.push_back(e.query);
+  return a.outside->ccd(queries);
+}
+
+int run_ccd(const std::string& path, const std::string& csv_kind, const std::string& engine_list,
+            const outside::OutsideOptions& outside_options) {
+  const auto outside = load_outside_engines(outside_options);
+  const auto known = ccd_engine_names(outside.get());
+  std::string every;
+  for (const auto& k : known) every += (every.empty() ? "" : ",") + k;
+  const auto names = parse_engine_list(engine_list.empty() ? every : engine_list, known, "ccd");
+  const std::vector<Answerer> engines = answerers(names, *outside);
   std::vector<io::CcdQueryEntry> entries = load(path, csv_kind);
   bool all_truth = true;
-  for (const auto& e : entries) all_truth = all_truth && e.truth.has_value();
+  std::vector<char> rounded(entries.size());
+  for (std::size_t i = 0; i < entries.size(); ++i) {
+    all_truth = all_truth && entries[i].truth.has_value();
+    rounded[i] = prepare_ccd_entry(entries[i]);
+  }
+  std::vector<std::vector<std::optional<CcdAnswer>>> answers;
+  for (const Answerer& a : engines) answers.push_back(answer_all(a, entries));
   std::vector<Tally> tally(engines.size());
   OJson results = OJson::array();
-  for (io::CcdQueryEntry& e : entries) {
-    const bool rounded = prepare_ccd_entry(e);
+  for (std::size_t i = 0; i < entries.size(); ++i) {
+    const io::CcdQueryEntry& e = entries[i];
     OJson row{{"id", e.id}};
     if (e.truth) row["truth"] = *e.truth;
-    if (e.rational) row["rounded"] = rounded;
+    if (e.rational) row["rounded"] = static_cast<bool>(rounded[i]);
     for (std::size_t k = 0; k < engines.size(); ++k) {
-      const auto a = answer_ccd_entry(*engines[k], e);
-      row[engines[k]->name] = answer_json(a);
-      if (all_truth) count(tally[k], a, *e.truth, rounded && !engines[k]->test_rational);
+      row[engines[k].name] = answer_json(answers[k][i]);
+      if (all_truth) count(tally[k], answers[k][i], *e.truth, rounded[i] && !engines[k].on_rationals());
     }
     results.push_back(std::move(row));
   }
   std::cout << OJson{{"results", results}}.dump() << "\n";
   if (all_truth && !entries.empty())
-    for (std::size_t k = 0; k < engines.size(); ++k) std::cerr << summary(engines[k]->name, tally[k]) << "\n";
+    for (std::size_t k = 0; k < engines.size(); ++k) std::cerr << summary(engines[k].name, tally[k]) << "\n";
   return 0;
 }
 
@@ -102,11 +147,11 @@ Command add_ccd(CLI::App& app) {
   struct Opts {
     std::string queries, csv_kind, engines;
     bool json = false;
+    outside::OutsideOptions outside;
   };
   auto o = std::make_shared<Opts>();
   std::string all;
   for (const auto& e : ccd_engines()) all += (all.empty() ? "" : ",") + e.name;
-  o->engines = all;
   CLI::App* sub = app.add_subcommand(
       "ccd", "Continuous collision (vertex-face, edge-edge over one time step) per engine, against a truth when given");
   sub->add_option("--queries", o->queries,
@@ -118,15 +163,17 @@ Command add_ccd(CLI::App& app) {
                   "Read --queries as the CCD benchmark's CSV of this kind (vertex-face|edge-edge): 8 rows per query "
                   "(t0 rows, then t1 rows), columns x num, x den, y num, y den, z num, z den, truth (0/1); ids are "
                   "the 0-based query index");
-  sub->add_option("--engines", o->engines, "Comma-separated engines (" + all + "; bullet answers vertex-face only)")
-      ->capture_default_str();
+  sub->add_option("--engines", o->engines,
+                  "Comma-separated engines (" + all +
+                      "; bullet answers vertex-face only; and outside engines answering ccd by name; default: every one)");
   sub->add_flag("--json", o->json, "Print JSON (the only output format; kept for the contract)");
+  add_outside_options(sub, o->outside);
   sub->footer(
       "Output: {\"results\":[{\"id\",\"truth\"?,\"rounded\"?,\"<engine>\":{\"hit\":bool,\"toi\":t|null}|null}]}. "
       "With a truth (CSV, or \"truth\" in JSON), stderr gets one line per engine: false positives and negatives; "
       "CSV queries whose rationals are not doubles (\"rounded\": true) are answered by exact on the rationals and "
       "by the others on the nearest doubles, and counted apart for the others.");
-  return [o]() { return run_ccd(o->queries, o->csv_kind, o->engines); };
+  return [o]() { return run_ccd(o->queries, o->csv_kind, o->engines, o->outside); };
 }
 
 }  // namespace

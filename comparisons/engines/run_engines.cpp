@@ -1,5 +1,6 @@
 #include "comparisons/engines/run_engines.h"
 
+#include "comparisons/engines/ccd_engines.h"
 #include "comparisons/engines/segment_plane_engines.h"
 #include "comparisons/engines/self_collision_engines.h"
 #include "comparisons/engines/tri_tri_engines.h"
@@ -64,11 +65,32 @@ std::vector<std::optional<SegmentPlaneHit>> segment_plane_answers(const std::str
   return outside_engine(name, outside, &outside::Capabilities::segment_plane)->segment_plane(queries);
 }
 
+bool answers_ccd(const outside::OutsideEngine& engine) {
+  const outside::Capabilities c = engine.capabilities();
+  return c.ccd_vertex_face || c.ccd_edge_edge;
+}
+
+std::vector<outside::OutsideEnginePtr> outside_ccd_engines(const outside::OutsideEngines* outside) {
+  std::vector<outside::OutsideEnginePtr> out;
+  if (outside)
+    for (const auto& e : outside->all())
+      if (answers_ccd(*e)) out.push_back(e);
+  return out;
+}
+
+std::vector<std::string> ccd_engine_names(const outside::OutsideEngines* outside) {
+  std::vector<std::string> names;
+  for (const auto& e : ccd_engines()) names.push_back(e.name);
+  for (const auto& e : outside_ccd_engines(outside)) names.push_back(e->name());
+  return names;
+}
+
 std::vector<std::string> builtin_engine_names() {
   std::vector<std::string> names;
   for (const auto& e : tri_tri_engines()) names.push_back(e.name);
   for (const auto& e : segment_plane_engines()) names.push_back(e.name);
   for (const auto& e : self_collision_engines()) names.push_back(e.name);
+  for (const auto& e : ccd_engines()) names.push_back(e.name);
   for (IntegratorKind k : {IntegratorKind::Euler, IntegratorKind::Symplectic, IntegratorKind::Midpoint, IntegratorKind::RK4})
     names.push_back(integrator_name(k));
   names.push_back("exact");

@@ -25,6 +25,13 @@ std::vector<std::optional<SegmentPlaneHit>> segment_plane_answers(const std::str
                                                                   const std::vector<outside::SegmentPlaneQuery>& queries,
                                                                   const outside::OutsideEngines* outside);
 
+/// Whether an outside engine answers continuous collision queries of some kind.
+bool answers_ccd(const outside::OutsideEngine& engine);
+/// Built-in ccd engines (ccd_engines.h), then the outside engines answering ccd of some kind.
+std::vector<std::string> ccd_engine_names(const outside::OutsideEngines* outside);
+/// The outside engines answering ccd, in load order (`outside` may be null).
+std::vector<outside::OutsideEnginePtr> outside_ccd_engines(const outside::OutsideEngines* outside);
+
 /// Every built-in engine's name (tri-tri, segment-plane, self-collision, core's integrators): an
 /// outside engine may not take one.
 std::vector<std::string> builtin_engine_names();

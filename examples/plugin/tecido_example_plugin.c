@@ -1,4 +1,4 @@
-/* An example tecido plug-in in plain C: two engines behind the ABI of include/tecido/plugin.h.
+/* An example tecido plug-in in plain C: three engines behind the ABI of include/tecido/plugin.h.
  *
  *   mt-plugin     the seed's triangle-triangle test: Moller-Trumbore (1997) on each edge of one
  *                 triangle against the other, with the paper's absolute epsilon 1e-6 on the
@@ -6,13 +6,21 @@
  *                 Known misses: coplanar (touching) pairs, a small triangle stabbing a large one.
  *   euler-plugin  explicit (forward) Euler on particles and springs with gravity and linear drag:
  *                 x += h v(t), v += h a(x(t), v(t)). Global order 1, which it claims.
+ *   sampled-ccd   a naive continuous collision test (vertex-face and edge-edge): it samples the
+ *                 coplanarity of the four points at SAMPLES + 1 instants and looks for a contact
+ *                 only where the sign changes, at the linearly interpolated time. Known misses:
+ *                 fast contacts, where the plane passes the point and back (or touches it)
+ *                 between two instants; contacts near an edge, where the interpolated time is off.
  *
  * Build: cc -shared -fPIC -O2 -I<tecido>/include tecido_example_plugin.c -o libtecido_example_plugin.so -lm
  * Use:   tecido tritri --pairs P.json --plugin ./libtecido_example_plugin.so --engines mt-plugin,exact --json
  *        tecido suite order --plugin ./libtecido_example_plugin.so --engines euler-plugin
+ *        tecido ccd --queries Q.json --plugin ./libtecido_example_plugin.so --engines exact,sampled-ccd --json
  *
  * EXAMPLE_EULER_NAME and EXAMPLE_EULER_CLAIMS rename the Euler engine and change the order it claims
- * (tecido's tests build a lying copy, "euler-liar", that claims 2 and must be caught). */
+ * (tecido's tests build a lying copy, "euler-liar", that claims 2 and must be caught);
+ * EXAMPLE_SAMPLED_EDGE_EDGE=NULL leaves sampled-ccd without an edge-edge test (the same copy: a
+ * kind it does not model). */
 #include <tecido/plugin.h>
 
 #include <math.h>
@@ -25,6 +33,9 @@
 #endif
 #ifndef EXAMPLE_EULER_CLAIMS
 #define EXAMPLE_EULER_CLAIMS 1.0
+#endif
+#ifndef EXAMPLE_SAMPLED_EDGE_EDGE
+#define EXAMPLE_SAMPLED_EDGE_EDGE sampled_edge_edge
 #endif
 
 /* ---- Moller-Trumbore on triangle edges ---- */
@@ -151,14 +162,88 @@ static void euler_read(const void* p, double* x, double* v) {
   memcpy(v, s->v, 3 * s->n * sizeof(double));
 }
 
+/* ---- sampled continuous collision ---- */
+
+#define SAMPLES 4
+
+/* The four points at time t: p[3k..3k+2] = (1 - t) t0 + t t1 for point k. */
+static void at_time(const double t0[12], const double t1[12], double t, double p[12]) {
+  for (int q = 0; q < 12; ++q) p[q] = (1.0 - t) * t0[q] + t * t1[q];
+}
+
+/* (p1 - p0) . ((p2 - p0) x (p3 - p0)): zero when the four points are coplanar. */
+static double coplanarity(const double p[12]) {
+  double u[3], v[3], w[3], n[3];
+  sub(p + 3, p, u), sub(p + 6, p, v), sub(p + 9, p, w);
+  cross(v, w, n);
+  return dot(u, n);
+}
+
+/* Vertex p[0..2] in the closed triangle p[3..11] (coplanar): barycentric signs by area vectors. */
+static int vertex_in_face(const double p[12]) {
+  double e1[3], e2[3], d[3], n[3], c[3];
+  sub(p + 6, p + 3, e1), sub(p + 9, p + 3, e2), sub(p, p + 3, d);
+  cross(e1, e2, n);
+  const double nn = dot(n, n);
+  if (nn == 0.0) return 0;
+  cross(d, e2, c);
+  const double u = dot(c, n) / nn;
+  cross(e1, d, c);
+  const double v = dot(c, n) / nn;
+  return u >= 0.0 && v >= 0.0 && u + v <= 1.0;
+}
+
+/* Segments p0p1 and p2p3 (coplanar) meet: the parameters of their closest points in [0, 1]. */
+static int edges_meet(const double p[12]) {
+  double a[3], b[3], r[3];
+  sub(p + 3, p, a), sub(p + 9, p + 6, b), sub(p, p + 6, r);
+  const double aa = dot(a, a), ab = dot(a, b), bb = dot(b, b), ar = dot(a, r), br = dot(b, r);
+  const double den = aa * bb - ab * ab;
+  if (den == 0.0) return 0; /* parallel: not handled */
+  const double s = (ab * br - bb * ar) / den, u = (aa * br - ab * ar) / den;
+  return s >= 0.0 && s <= 1.0 && u >= 0.0 && u <= 1.0;
+}
+
+static int sampled(const double t0[12], const double t1[12], double* toi, int (*meets)(const double*)) {
+  double p[12], prev = 0.0;
+  for (int k = 0; k <= SAMPLES; ++k) {
+    const double t = (double)k / SAMPLES;
+    at_time(t0, t1, t, p);
+    const double f = coplanarity(p);
+    if (k > 0 && ((prev <= 0.0 && f >= 0.0) || (prev >= 0.0 && f <= 0.0))) {
+      const double tc = prev == f ? t : t - (1.0 / SAMPLES) * f / (f - prev); /* linear interpolation */
+      at_time(t0, t1, tc, p);
+      if (meets(p)) {
+        *toi = tc;
+        return 1;
+      }
+    }
+    prev = f;
+  }
+  return 0;
+}
+
+static int sampled_vertex_face(const double t0[12], const double t1[12], double* toi) {
+  return sampled(t0, t1, toi, vertex_in_face);
+}
+
+static int sampled_edge_edge(const double t0[12], const double t1[12], double* toi) {
+  return sampled(t0, t1, toi, edges_meet);
+}
+
 /* ---- the table ---- */
 
 static const tecido_engine engines[] = {
     {"mt-plugin", 0.0, TECIDO_ENGINE_THREAD_SAFE, mt_tri_tri, NULL, NULL, NULL, NULL, NULL, NULL, NULL},
     {EXAMPLE_EULER_NAME, EXAMPLE_EULER_CLAIMS, TECIDO_ENGINE_THREAD_SAFE, NULL, NULL, NULL, NULL, euler_create,
      euler_step, euler_read, euler_destroy},
+    {"sampled-ccd", 0.0, TECIDO_ENGINE_THREAD_SAFE, NULL, NULL, sampled_vertex_face, EXAMPLE_SAMPLED_EDGE_EDGE, NULL,
+     NULL, NULL, NULL},
 };
 
 static const tecido_plugin plugin = {TECIDO_PLUGIN_ABI_VERSION, sizeof engines / sizeof engines[0], engines};
 
-const tecido_plugin* tecido_plugin_entry(void) { return &plugin; }
+const tecido_plugin* tecido_plugin_entry(void) {
+  (void)sampled_edge_edge; /* referenced even when EXAMPLE_SAMPLED_EDGE_EDGE leaves it out of the table */
+  return &plugin;
+}

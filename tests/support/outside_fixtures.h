@@ -10,8 +10,8 @@
 
 namespace tecido::testing {
 
-inline const std::string kExamplePlugin = TECIDO_EXAMPLE_PLUGIN;      // mt-plugin, euler-plugin (claims 1)
-inline const std::string kLiarPlugin = TECIDO_LIAR_PLUGIN;            // mt-plugin, euler-liar (explicit Euler, claims 2)
+inline const std::string kExamplePlugin = TECIDO_EXAMPLE_PLUGIN;      // mt-plugin, euler-plugin (claims 1), sampled-ccd
+inline const std::string kLiarPlugin = TECIDO_LIAR_PLUGIN;            // mt-plugin, euler-liar (explicit Euler, claims 2), sampled-ccd (vertex-face only)
 inline const std::string kNoEntryPlugin = TECIDO_NO_ENTRY_PLUGIN;     // exports no tecido_plugin_entry
 inline const std::string kFutureAbiPlugin = TECIDO_FUTURE_ABI_PLUGIN; // abi_version 99
 // Commands as a user types them (the source path has no blanks; tests quote the whole command).

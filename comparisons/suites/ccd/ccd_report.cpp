@@ -91,7 +91,27 @@ std::string method_markdown(const Settings& s, std::uint64_t seed) {
   return md + "\n";
 }
 
-std::string kind_tables(CcdKind kind, const std::vector<FamilyResult>& results, const std::vector<std::string>& failed) {
+std::string outside_markdown(const std::vector<SuiteEngine>& engines) {
+  std::string md;
+  for (const SuiteEngine& e : engines) {
+    if (!e.is_outside()) continue;
+    std::string kinds;
+    for (CcdKind k : {CcdKind::VertexFace, CcdKind::EdgeEdge})
+      if (e.models(k)) kinds += std::string(kinds.empty() ? "" : " and ") + ccd_kind_name(k);
+    md += fmt::format("- `{}`: {}; answers {}{}.\n", e.name, e.outside->door(), kinds,
+                      e.outside->is_process() ? "; its ns/query includes the round trips of its door" : "");
+  }
+  if (md.empty()) return md;
+  return "Outside engines (checked like the reference engines: on random motion only, false negative, false "
+         "positive and unanswered shares within /ccd/outside_random_max_*; their adversarial rows are reported):\n\n" +
+         md + "\n";
+}
+
+std::string kind_tables(CcdKind kind, const std::vector<FamilyResult>& results, const std::vector<std::string>& failed,
+                        const std::vector<std::string>& not_modelled) {
+  const auto off = [&](const std::string& e) {
+    return std::find(not_modelled.begin(), not_modelled.end(), e) != not_modelled.end();
+  };
   const std::vector<std::string> engines = engine_names(results, failed);
   std::string fnfp = header("family | queries | contacts", engines), toi = header("family", engines),
               ns = header("family", engines);
@@ -108,15 +128,21 @@ std::string kind_tables(CcdKind kind, const std::vector<FamilyResult>& results, 
     toi += "| " + std::string(fams[k].name) + " |";
     ns += "| " + std::string(fams[k].name) + " |";
     for (const EngineTally& e : r.engines) {
+      if (off(e.engine)) {
+        fnfp += " not modelled |", toi += " – |", ns += " – |";
+        continue;
+      }
       fnfp += " " + fn_fp_cell(e) + " |";
       toi += " " + toi_cell(e) + " |";
       ns += e.no_answer == e.queries ? " n/a |" : fmt::format(" {:.0f} |", e.ns_per_query());
     }
     fnfp += "\n", toi += "\n", ns += "\n";
   }
-  return fmt::format("### {}\n\nFalse negatives / false positives against the referee:\n\n{}\nTime-of-impact error "
-                     "where both hit, max / mean:\n\n{}\nns per query:\n\n{}\n",
-                     ccd_kind_name(kind), fnfp, toi, ns);
+  std::string refused;
+  for (const auto& e : not_modelled) refused += fmt::format("{}: not modelled by {}.\n", ccd_kind_name(kind), e);
+  return fmt::format("### {}\n\n{}False negatives / false positives against the referee:\n\n{}\nTime-of-impact "
+                     "error where both hit, max / mean:\n\n{}\nns per query:\n\n{}\n",
+                     ccd_kind_name(kind), refused.empty() ? "" : refused + "\n", fnfp, toi, ns);
 }
 
 std::string referee_table(const std::vector<FamilyResult>& results, const std::vector<std::string>& failed) {

@@ -6,6 +6,7 @@
 #include "comparisons/suites/ccd/family_statistics.h"
 #include "comparisons/suites/ccd/settings.h"
 #include "comparisons/suites/ccd/sheet_through_sheet.h"
+#include "comparisons/suites/ccd/suite_engines.h"
 
 #include <cstdint>
 #include <string>
@@ -16,8 +17,12 @@ namespace tecido::suites::ccd {
 /// The method paragraph, from the settings and the family table.
 std::string method_markdown(const Settings& s, std::uint64_t seed);
 /// The tables of one kind: results[k] belongs to families()[k]; failed[k] is the error of a
-/// family whose case threw ("" otherwise).
-std::string kind_tables(CcdKind kind, const std::vector<FamilyResult>& results, const std::vector<std::string>& failed);
+/// family whose case threw ("" otherwise); `not_modelled` names the engines that do not model the
+/// kind (their cells read "not modelled", and a line says "not modelled by <engine>").
+std::string kind_tables(CcdKind kind, const std::vector<FamilyResult>& results, const std::vector<std::string>& failed,
+                        const std::vector<std::string>& not_modelled = {});
+/// The outside engines among `engines`, with their doors and what is checked of them ("" when none).
+std::string outside_markdown(const std::vector<SuiteEngine>& engines);
 /// The referee's consistency table (constructed answers, filter) over every family.
 std::string referee_table(const std::vector<FamilyResult>& results, const std::vector<std::string>& failed);
 /// Conclusions drawn from the tables: who missed contacts where, false positive shares, and the

@@ -28,26 +28,58 @@ struct Plan {
   ccd::SheetSettings sheet;
   std::uint64_t seed = 0;
   bool referee = false;  ///< the exact referee is built (otherwise nothing runs)
-  CheckList checks;      ///< declared from the family table and the tolerance file, before any case runs
+  std::vector<ccd::SuiteEngine> engines;  ///< the referee and the selected engines (suite_engines.h)
+  bool sheet_runs = false;  ///< the sheet-through-sheet group runs (it measures core: when core is selected)
+  CheckList checks;      ///< declared from the family table, the engines and the tolerance file, before any case runs
+
+  bool runs(const std::string& name) const {
+    for (const auto& e : engines)
+      if (e.name == name) return true;
+    return false;
+  }
+  std::vector<std::string> engine_names() const {
+    std::vector<std::string> names;
+    for (const auto& e : engines) names.push_back(e.name);
+    return names;
+  }
 };
 
-/// The checks of one family (see ccd_suite.h).
-void declare_family(CheckList& c, const Tolerances& tol, const Family& f) {
-  c.declare(check_name(f, "core", "false_negatives"), tol.at_most("/ccd/core_false_negatives"), "contacts core missed");
-  c.declare(check_name(f, "core", "toi_after_exact"), tol.at_most("/ccd/core_toi_after_exact"),
-            "core hits whose toi is certainly after the referee's first contact");
+/// An outside engine's checks on family f: on random motion only, like the reference engines
+/// (the adversarial families are reported), and only on the kind it models.
+void declare_outside(CheckList& c, const Tolerances& tol, const Family& f, const ccd::SuiteEngine& e) {
+  if (!f.checks_references || !e.models(f.kind)) return;
+  c.declare(check_name(f, e.name, "false_negative_rate"), tol.at_most("/ccd/outside_random_max_fn_rate"),
+            "share of contacts missed");
+  c.declare(check_name(f, e.name, "false_positive_rate"), tol.at_most("/ccd/outside_random_max_fp_rate"),
+            "share of non-contacts called hits");
+  c.declare(check_name(f, e.name, "unanswered_rate"), tol.at_most("/ccd/outside_random_max_unanswered_rate"),
+            "share of queries answered null (cannot say)");
+}
+
+/// The checks of one family (see ccd_suite.h), for the engines the plan runs.
+void declare_family(CheckList& c, const Tolerances& tol, const Family& f, const Plan& p) {
+  if (p.runs("core")) {
+    c.declare(check_name(f, "core", "false_negatives"), tol.at_most("/ccd/core_false_negatives"), "contacts core missed");
+    c.declare(check_name(f, "core", "toi_after_exact"), tol.at_most("/ccd/core_toi_after_exact"),
+              "core hits whose toi is certainly after the referee's first contact");
+  }
   if (f.constructed)
     c.declare(check_name(f, "exact", "known_mismatches"), tol.at_most("/ccd/exact_known_mismatches"),
               "queries where the referee differs from the constructed answer (hit, or toi)");
   c.declare(check_name(f, "exact", "unfiltered_mismatches"), tol.at_most("/ccd/exact_unfiltered_mismatches"),
             "queries where the referee differs from itself without its floating-point filter");
+  for (const ccd::SuiteEngine& e : p.engines)
+    if (e.is_outside()) declare_outside(c, tol, f, e);
   if (!f.checks_references) return;
-  c.declare(check_name(f, "core", "false_positive_rate"), tol.at_most("/ccd/core_random_max_fp_rate"),
-            "share of non-contacts core calls hits");
-  c.declare(check_name(f, "core", "max_toi_error"), tol.at_most("/ccd/core_random_max_toi_error"),
-            "max t* - toi where both hit");
-  std::vector<std::string> refs = {"fcl"};
-  if (f.kind == CcdKind::VertexFace) refs.push_back("bullet");  // Bullet has no edge-edge test
+  if (p.runs("core")) {
+    c.declare(check_name(f, "core", "false_positive_rate"), tol.at_most("/ccd/core_random_max_fp_rate"),
+              "share of non-contacts core calls hits");
+    c.declare(check_name(f, "core", "max_toi_error"), tol.at_most("/ccd/core_random_max_toi_error"),
+              "max t* - toi where both hit");
+  }
+  std::vector<std::string> refs;
+  if (p.runs("fcl")) refs.push_back("fcl");
+  if (f.kind == CcdKind::VertexFace && p.runs("bullet")) refs.push_back("bullet");  // Bullet has no edge-edge test
   for (const std::string& e : refs) {
     c.declare(check_name(f, e, "false_negative_rate"), tol.at_most("/ccd/" + e + "_random_max_fn_rate"),
               "share of contacts missed");
@@ -94,10 +126,16 @@ void record_sheet(CheckList& c, const ccd::SheetResult& r, const ccd::SheetSetti
 }
 
 Plan make_plan(const SuiteContext& ctx) {
-  Plan p{ccd::settings(ctx.quick), ccd::sheet_settings(ctx.quick), ctx.seed, find_ccd_engine("exact") != nullptr, {}};
+  Plan p;
+  p.settings = ccd::settings(ctx.quick);
+  p.sheet = ccd::sheet_settings(ctx.quick);
+  p.seed = ctx.seed;
+  p.referee = find_ccd_engine("exact") != nullptr;
   if (!p.referee) return p;
-  for (const Family& f : ccd::families()) declare_family(p.checks, *ctx.tolerances, f);
-  declare_sheet(p.checks, *ctx.tolerances);
+  p.engines = ccd::suite_engines(ctx);
+  p.sheet_runs = p.runs("core");
+  for (const Family& f : ccd::families()) declare_family(p.checks, *ctx.tolerances, f, p);
+  if (p.sheet_runs) declare_sheet(p.checks, *ctx.tolerances);
   return p;
 }
 
@@ -113,6 +151,7 @@ void record(CheckList& c, const Family& f, const FamilyResult& r) {
     set("false_negative_rate", r.fn_rate(e));
     set("false_positive_rate", r.fp_rate(e));
     set("max_toi_error", e.max_toi_error);
+    set("unanswered_rate", e.queries ? static_cast<double>(e.no_answer) / static_cast<double>(e.queries) : 0.0);
   }
   if (c.declared(check_name(f, "exact", "known_mismatches")))
     c.set(check_name(f, "exact", "known_mismatches"), static_cast<double>(r.known_mismatch));
@@ -126,7 +165,8 @@ std::string write_disagreements(const Plan& plan, const SuiteContext& ctx, const
   for (std::size_t k = 0; k < results.size(); ++k) {
     if (results[k].disagree.empty()) continue;
     const auto queries = ccd::family_queries(k, plan.settings, plan.seed);
-    ccd::add_disagreements(ccd::family_name(fams[k]), results[k], queries, plan.settings.max_disagreements, entries);
+    ccd::add_disagreements(ccd::family_name(fams[k]), results[k], queries, plan.engine_names(),
+                           plan.settings.max_disagreements, entries);
   }
   io::write_file_atomic(ctx.out_dir + "/ccd/disagreements.json", io::ccd_queries_to_json(entries).dump() + "\n");
   return fmt::format("{} disagreements with the referee (at most {}) are in `ccd/disagreements.json` (ids "
@@ -134,6 +174,14 @@ std::string write_disagreements(const Plan& plan, const SuiteContext& ctx, const
                      "DIR/ccd/disagreements.json --json` re-runs them with every engine and prints each one's false "
                      "positives and negatives.\n\n",
                      entries.size(), plan.settings.max_disagreements);
+}
+
+/// The outside engines of the plan that do not model `kind` (their cells read "not modelled").
+std::vector<std::string> not_modelled(const Plan& plan, CcdKind kind) {
+  std::vector<std::string> names;
+  for (const auto& e : plan.engines)
+    if (!e.models(kind)) names.push_back(e.name);
+  return names;
 }
 
 SuiteResult assemble(const Plan& plan_in, const SuiteContext& ctx, const std::vector<io::Json>& results) {
@@ -157,7 +205,10 @@ SuiteResult assemble(const Plan& plan_in, const SuiteContext& ctx, const std::ve
     record(plan.checks, fams[k], fr[k]);
   }
   std::string sheet_md;
-  if (const std::string* err = case_error(results.at(fams.size()))) {
+  if (!plan.sheet_runs) {
+    sheet_md = "### A sheet through a sheet\n\nNot run: it measures core's continuous self-collision, and --engines does "
+               "not select core.\n\n";
+  } else if (const std::string* err = case_error(results.at(fams.size()))) {
     plan.checks.fail_pending(kSheet, "case threw: " + *err);
     sheet_md = "### A sheet through a sheet\n\nfailed: " + *err + "\n\n";
   } else {
@@ -165,8 +216,11 @@ SuiteResult assemble(const Plan& plan_in, const SuiteContext& ctx, const std::ve
     record_sheet(plan.checks, sr, plan.sheet);
     sheet_md = ccd::sheet_markdown(sr, plan.sheet);
   }
-  res.markdown = ccd::method_markdown(plan.settings, plan.seed) + ccd::kind_tables(CcdKind::VertexFace, fr, failed) +
-                 ccd::kind_tables(CcdKind::EdgeEdge, fr, failed) + ccd::referee_table(fr, failed) +
+  const std::vector<std::string> vf_off = not_modelled(plan, CcdKind::VertexFace),
+                                 ee_off = not_modelled(plan, CcdKind::EdgeEdge);
+  res.markdown = ccd::method_markdown(plan.settings, plan.seed) + ccd::outside_markdown(plan.engines) +
+                 ccd::kind_tables(CcdKind::VertexFace, fr, failed, vf_off) +
+                 ccd::kind_tables(CcdKind::EdgeEdge, fr, failed, ee_off) + ccd::referee_table(fr, failed) +
                  ccd::conclusions(fr, failed) + write_disagreements(plan, ctx, fr) + sheet_md;
   res.data = ccd::results_json(fr);
   res.checks = plan.checks.finish();
@@ -178,11 +232,13 @@ SuiteResult assemble(const Plan& plan_in, const SuiteContext& ctx, const std::ve
 Sweep ccd_sweep(const SuiteContext& ctx) {
   auto plan = std::make_shared<const Plan>(make_plan(ctx));
   Sweep s;
-  s.cases = plan->referee ? ccd::families().size() + 1 : 0;  // the families, then the sheet case group
+  // the families, then the sheet case group when it runs
+  s.cases = plan->referee ? ccd::families().size() + (plan->sheet_runs ? 1 : 0) : 0;
   s.run_case = [plan](std::size_t k) {
     if (k == ccd::families().size()) return ccd::sheet_result_json(ccd::run_sheet_through_sheet(plan->sheet));
     const auto queries = ccd::family_queries(k, plan->settings, plan->seed);
-    return ccd::family_result_json(ccd::run_family(ccd::family_name(ccd::families()[k]), queries, plan->settings));
+    return ccd::family_result_json(
+        ccd::run_family(ccd::family_name(ccd::families()[k]), queries, plan->settings, plan->engines));
   };
   const SuiteContext c = ctx;
   s.assemble = [plan, c](const std::vector<io::Json>& results) { return assemble(*plan, c, results); };

@@ -1,16 +1,13 @@
 #include "comparisons/suites/ccd/disagreements.h"
 
-#include "comparisons/engines/ccd_engines.h"
-
 namespace tecido::suites::ccd {
 
 void add_disagreements(const std::string& family, const FamilyResult& r, const std::vector<KnownQuery>& queries,
-                       std::size_t cap, std::vector<io::CcdQueryEntry>& out) {
-  const auto& engines = ccd_engines();
+                       const std::vector<std::string>& engines, std::size_t cap, std::vector<io::CcdQueryEntry>& out) {
   for (const Disagreement& d : r.disagree) {
     if (out.size() >= cap) return;
     io::CcdQueryEntry e;
-    e.id = engines.at(static_cast<std::size_t>(d.engine)).name + ":" + family + "/" + std::to_string(d.query);
+    e.id = engines.at(static_cast<std::size_t>(d.engine)) + ":" + family + "/" + std::to_string(d.query);
     e.query = queries.at(static_cast<std::size_t>(d.query)).q;
     e.truth = d.truth;
     out.push_back(std::move(e));

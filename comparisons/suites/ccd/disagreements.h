@@ -13,8 +13,9 @@
 
 namespace tecido::suites::ccd {
 
-/// Appends family `family`'s disagreements (its queries as generated) to `out`, at most `cap` in all.
+/// Appends family `family`'s disagreements (its queries as generated) to `out`, at most `cap` in
+/// all; `engines` are the names the disagreements' engine indices point into.
 void add_disagreements(const std::string& family, const FamilyResult& r, const std::vector<KnownQuery>& queries,
-                       std::size_t cap, std::vector<io::CcdQueryEntry>& out);
+                       const std::vector<std::string>& engines, std::size_t cap, std::vector<io::CcdQueryEntry>& out);
 
 }  // namespace tecido::suites::ccd

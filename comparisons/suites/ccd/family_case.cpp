@@ -5,7 +5,6 @@
 #include "reference/exact_ccd.h"
 #endif
 
-#include <chrono>
 #include <cmath>
 #include <stdexcept>
 
@@ -47,14 +46,11 @@ std::vector<ExactCcd> referee(const std::vector<KnownQuery>& queries, const Sett
 }
 
 /// One engine on the block: timed answers, then the tally against the truth.
-EngineTally tally_engine(const CcdEngine& engine, int engine_index, const std::vector<KnownQuery>& queries,
+EngineTally tally_engine(const SuiteEngine& engine, int engine_index, const std::vector<KnownQuery>& queries,
                          const std::vector<ExactCcd>& truth, const Settings& s, FamilyResult& r) {
-  std::vector<std::optional<CcdAnswer>> got(queries.size());
-  const auto t0 = std::chrono::steady_clock::now();
-  for (std::size_t i = 0; i < queries.size(); ++i) got[i] = engine.test(queries[i].q);
   EngineTally t;
+  const std::vector<std::optional<CcdAnswer>> got = answer_block(engine, queries, t.seconds);
   t.engine = engine.name;
-  t.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   t.queries = static_cast<long>(queries.size());
   for (std::size_t i = 0; i < queries.size(); ++i) {
     const ExactCcd& e = truth[i];
@@ -80,12 +76,12 @@ EngineTally tally_engine(const CcdEngine& engine, int engine_index, const std::v
 
 }  // namespace
 
-FamilyResult run_family(const std::string& family, const std::vector<KnownQuery>& queries, const Settings& s) {
+FamilyResult run_family(const std::string& family, const std::vector<KnownQuery>& queries, const Settings& s,
+                        const std::vector<SuiteEngine>& engines) {
   FamilyResult r;
   r.family = family;
   r.queries = static_cast<long>(queries.size());
   const std::vector<ExactCcd> truth = referee(queries, s, r);
-  const auto& engines = ccd_engines();
   for (std::size_t k = 0; k < engines.size(); ++k)
     r.engines.push_back(tally_engine(engines[k], static_cast<int>(k), queries, truth, s, r));
   return r;
@@ -93,7 +89,8 @@ FamilyResult run_family(const std::string& family, const std::vector<KnownQuery>
 
 #else
 
-FamilyResult run_family(const std::string&, const std::vector<KnownQuery>&, const Settings&) {
+FamilyResult run_family(const std::string&, const std::vector<KnownQuery>&, const Settings&,
+                        const std::vector<SuiteEngine>&) {
   throw std::logic_error("the ccd suite needs the exact referee (reference build)");
 }
 

@@ -27,7 +27,7 @@ struct EngineTally {
 
 /// An engine's answer that differs from the referee's on one query of the family.
 struct Disagreement {
-  int engine = 0;   ///< index into ccd_engines()
+  int engine = 0;   ///< index into the suite's engines (suite_engines.h)
   long query = 0;   ///< index into the family's queries
   bool truth = false;  ///< the referee's hit
 };

@@ -1,5 +1,7 @@
 #include "comparisons/suites/selfcollision/check_plan.h"
 
+#include <algorithm>
+
 namespace tecido::suites::selfcollision {
 
 std::string check_name(const std::string& engine, const std::string& source, const std::string& measure) {
@@ -7,11 +9,12 @@ std::string check_name(const std::string& engine, const std::string& source, con
 }
 
 CheckList declare_checks(const std::vector<FrameSource>& sources, const std::vector<std::string>& engines,
-                         const std::string& truth, const Tolerances& tol) {
+                         const std::string& truth, const Tolerances& tol, const std::vector<std::string>& outside) {
   CheckList checks;
   for (const std::string& e : engines) {
     if (e == truth) continue;
-    const Band band = tol.at_least("/selfcollision/" + e + "_min", 1.0);
+    const bool is_outside = std::find(outside.begin(), outside.end(), e) != outside.end();
+    const Band band = tol.at_least(is_outside ? "/selfcollision/outside_min" : "/selfcollision/" + e + "_min", 1.0);
     for (const FrameSource& s : sources) {
       checks.declare(check_name(e, s.name, "precision"), band, "reported pairs that are true / reported, vs " + truth);
       checks.declare(check_name(e, s.name, "recall"), band, "true pairs reported / true pairs, vs " + truth);

@@ -15,9 +15,10 @@ namespace tecido::suites::selfcollision {
 std::string check_name(const std::string& engine, const std::string& source, const std::string& measure);
 
 /// For each engine but `truth`, each source: precision and recall, each at least
-/// /selfcollision/<engine>_min (io::InputError when the file lacks it) and at most 1.
+/// /selfcollision/<engine>_min (an outside engine, named in `outside`: /selfcollision/outside_min;
+/// io::InputError when the file lacks it) and at most 1.
 CheckList declare_checks(const std::vector<FrameSource>& sources, const std::vector<std::string>& engines,
-                         const std::string& truth, const Tolerances& tol);
+                         const std::string& truth, const Tolerances& tol, const std::vector<std::string>& outside = {});
 
 /// Records the checks of `source` from its score. Failed with a reason instead of a value: every
 /// check of the source when its case threw; an engine's two checks when it left frames

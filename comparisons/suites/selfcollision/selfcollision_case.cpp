@@ -22,10 +22,50 @@ EngineScore score_engine(const SelfCollisionEngine& eng, const FrameSet& set,
   }
   return e;
 }
+
+/// A narrow phase that accepts every pair: the detector then returns its broad phase's candidates.
+bool every_pair(const Triangle&, const Triangle&) { return true; }
+
+EngineScore score_outside(outside::OutsideEngine& eng, const FrameSet& set,
+                          const std::vector<std::vector<TrianglePair>>& truth) {
+  EngineScore e;
+  e.engine = eng.name();
+  for (std::size_t i = 0; i < set.frames.size(); ++i) {
+    const auto got = outside_pairs(eng, set.frames[i].x, set.triangles, e.seconds);
+    if (!got) continue;
+    ++e.answered;
+    e.pairs.add(*got, truth[i]);
+  }
+  return e;
+}
 }  // namespace
 
+std::optional<std::vector<TrianglePair>> outside_pairs(outside::OutsideEngine& engine, const std::vector<Vec3>& x,
+                                                       const std::vector<std::array<int, 3>>& triangles,
+                                                       double& seconds) {
+  const double w0 = outside::door_seconds_on_this_thread(), t0 = thread_cpu_seconds();
+  const std::vector<TrianglePair> candidates = self_collision_pairs(x, triangles, &every_pair);
+  std::vector<outside::TriTriQuery> queries;
+  queries.reserve(candidates.size());
+  const auto tri = [&](int k) {
+    const auto& t = triangles[static_cast<std::size_t>(k)];
+    return Triangle{x[static_cast<std::size_t>(t[0])], x[static_cast<std::size_t>(t[1])], x[static_cast<std::size_t>(t[2])]};
+  };
+  for (const TrianglePair& p : candidates) queries.push_back({tri(p[0]), tri(p[1])});
+  const auto got = queries.empty() ? std::vector<std::optional<bool>>{} : engine.tri_tri(queries);
+  seconds += thread_cpu_seconds() - t0 + (engine.is_process() ? outside::door_seconds_on_this_thread() - w0 : 0.0);
+  if (got.size() != queries.size()) throw std::runtime_error(engine.name() + " answered a different number of pairs");
+  std::vector<TrianglePair> pairs;
+  for (std::size_t k = 0; k < got.size(); ++k) {
+    if (!got[k]) return std::nullopt;
+    if (*got[k]) pairs.push_back(candidates[k]);
+  }
+  return pairs;  // candidates are sorted, so these are too
+}
+
 SourceScore score_source(const FrameSource& source, const Settings& s, const std::string& data_dir,
-                         const SelfCollisionEngine& truth, const std::vector<SelfCollisionEngine>& engines) {
+                         const SelfCollisionEngine& truth, const std::vector<SelfCollisionEngine>& engines,
+                         const std::vector<outside::OutsideEnginePtr>& outside) {
   const FrameSet set = source.record(s, data_dir);
   SourceScore out;
   out.frames = static_cast<long>(set.frames.size());
@@ -39,6 +79,7 @@ SourceScore score_source(const FrameSource& source, const Settings& s, const std
     true_pairs.push_back(std::move(*t));
   }
   for (const SelfCollisionEngine& eng : engines) out.engines.push_back(score_engine(eng, set, true_pairs));
+  for (const outside::OutsideEnginePtr& eng : outside) out.engines.push_back(score_outside(*eng, set, true_pairs));
   return out;
 }
 

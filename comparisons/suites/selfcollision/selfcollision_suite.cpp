@@ -1,5 +1,7 @@
 #include "comparisons/suites/selfcollision/selfcollision_suite.h"
 
+#include "comparisons/engines/outside/outside_engines.h"
+
 #include "comparisons/suites/selfcollision/check_plan.h"
 #include "comparisons/suites/selfcollision/selfcollision_case.h"
 #include "comparisons/suites/selfcollision/selfcollision_report.h"
@@ -20,14 +22,17 @@ struct Plan {
   std::string data_dir;
   std::vector<FrameSource> sources;
   std::vector<SelfCollisionEngine> engines;
+  std::vector<outside::OutsideEnginePtr> outside;  ///< scored after `engines`
   std::vector<std::string> engine_names;
   const SelfCollisionEngine* truth = nullptr;  ///< into engines
   CheckList checks;
 };
 
 std::shared_ptr<Plan> make_plan(const SuiteContext& ctx, const selfcollision::Settings& settings,
-                                std::vector<FrameSource> sources, std::vector<SelfCollisionEngine> engines) {
+                                std::vector<FrameSource> sources, std::vector<SelfCollisionEngine> engines,
+                                std::vector<outside::OutsideEnginePtr> outside) {
   auto plan = std::make_shared<Plan>();
+  plan->outside = std::move(outside);
   plan->settings = settings;
   plan->data_dir = ctx.data_dir;
   plan->sources = std::move(sources);
@@ -37,8 +42,25 @@ std::shared_ptr<Plan> make_plan(const SuiteContext& ctx, const selfcollision::Se
       if (!plan->truth && e.name == name) plan->truth = &e;
   if (!plan->truth) throw std::logic_error("selfcollision: no truth engine (exact or core-brute) among the engines");
   for (const SelfCollisionEngine& e : plan->engines) plan->engine_names.push_back(e.name);
-  plan->checks = selfcollision::declare_checks(plan->sources, plan->engine_names, plan->truth->name, *ctx.tolerances);
+  std::vector<std::string> outside_names;
+  for (const auto& e : plan->outside) outside_names.push_back(e->name());
+  for (const auto& n : outside_names) plan->engine_names.push_back(n);
+  plan->checks = selfcollision::declare_checks(plan->sources, plan->engine_names, plan->truth->name, *ctx.tolerances,
+                                               outside_names);
   return plan;
+}
+
+/// Each outside engine's door and how it runs here ("" when there is none).
+std::string outside_markdown(const Plan& plan) {
+  std::string md;
+  for (const auto& e : plan.outside)
+    md += "- `" + e->name() + "`: " + e->door() + (e->is_process() ? " (its time includes the round trips of its door)" : "") +
+          "\n";
+  if (md.empty()) return md;
+  return "Outside engines answering tri_tri run as self-collision engines: each frame's candidate pairs from core's "
+         "broad phase (boxes overlap, no shared vertex) go to the engine in one batch, and the pairs it calls "
+         "intersecting are its answer; checked like core (precision and recall at least /selfcollision/outside_min):\n\n" +
+         md + "\n";
 }
 
 SuiteResult assemble(const Plan& plan, const std::vector<io::Json>& results) {
@@ -51,7 +73,7 @@ SuiteResult assemble(const Plan& plan, const std::vector<io::Json>& results) {
   SuiteResult res;
   res.name = "selfcollision";
   const std::string& truth = plan.truth->name;
-  res.markdown = selfcollision::method_markdown(plan.settings, plan.sources, scores, truth) +
+  res.markdown = selfcollision::method_markdown(plan.settings, plan.sources, scores, truth) + outside_markdown(plan) +
                  selfcollision::score_table(plan.sources, scores) + "\n" +
                  selfcollision::conclusions_markdown(plan.sources, scores, truth);
   res.data = selfcollision::scores_json(plan.sources, scores);
@@ -62,21 +84,32 @@ SuiteResult assemble(const Plan& plan, const std::vector<io::Json>& results) {
 }  // namespace
 
 Sweep selfcollision_sweep_for(const SuiteContext& ctx, const selfcollision::Settings& settings,
-                              std::vector<FrameSource> sources, std::vector<SelfCollisionEngine> engines) {
-  std::shared_ptr<const Plan> plan = make_plan(ctx, settings, std::move(sources), std::move(engines));
+                              std::vector<FrameSource> sources, std::vector<SelfCollisionEngine> engines,
+                              std::vector<outside::OutsideEnginePtr> outside) {
+  std::shared_ptr<const Plan> plan = make_plan(ctx, settings, std::move(sources), std::move(engines), std::move(outside));
   Sweep s;
   s.cases = plan->sources.size();
   s.run_case = [plan](std::size_t k) {
     return selfcollision::source_score_json(
-        selfcollision::score_source(plan->sources.at(k), plan->settings, plan->data_dir, *plan->truth, plan->engines));
+        selfcollision::score_source(plan->sources.at(k), plan->settings, plan->data_dir, *plan->truth, plan->engines,
+                                    plan->outside));
   };
   s.assemble = [plan](const std::vector<io::Json>& results) { return assemble(*plan, results); };
   return s;
 }
 
 Sweep selfcollision_sweep(const SuiteContext& ctx) {
+  // --engines selects the engines; the truth (exact, or core-brute without the reference build) always runs.
+  const bool exact_built = find_self_collision_engine("exact") != nullptr;
+  std::vector<SelfCollisionEngine> engines;
+  for (const SelfCollisionEngine& e : self_collision_engines())
+    if (ctx.selects(e.name) || e.name == (exact_built ? "exact" : "core-brute")) engines.push_back(e);
+  std::vector<outside::OutsideEnginePtr> outside;
+  if (ctx.outside)
+    for (const auto& e : ctx.outside->with(&outside::Capabilities::tri_tri))
+      if (ctx.selects(e->name())) outside.push_back(e);
   return selfcollision_sweep_for(ctx, selfcollision::settings(ctx.quick), selfcollision::frame_sources(),
-                                 self_collision_engines());
+                                 std::move(engines), std::move(outside));
 }
 
 SuiteResult run_selfcollision_suite(const SuiteContext& ctx) {

@@ -21,10 +21,14 @@ std::string load_error(const std::string& path) {
 TEST(PluginLibrary, LoadsTheExampleTable) {
   const auto lib = PluginLibrary::load(testing::kExamplePlugin);
   ASSERT_EQ(lib->table().abi_version, static_cast<std::uint32_t>(TECIDO_PLUGIN_ABI_VERSION));
-  ASSERT_EQ(lib->table().engine_count, 2u);
+  ASSERT_EQ(lib->table().engine_count, 3u);
   EXPECT_STREQ(lib->table().engines[0].name, "mt-plugin");
   EXPECT_STREQ(lib->table().engines[1].name, "euler-plugin");
   EXPECT_EQ(lib->table().engines[1].claimed_order, 1.0);
+  EXPECT_STREQ(lib->table().engines[2].name, "sampled-ccd");
+  EXPECT_NE(lib->table().engines[2].ccd_vertex_face, nullptr);
+  EXPECT_NE(lib->table().engines[2].ccd_edge_edge, nullptr);
+  EXPECT_EQ(lib->table().engines[2].tri_tri, nullptr);
   EXPECT_EQ(lib->door(), "plug-in " + testing::kExamplePlugin + " (ABI 1)");
 }
 

@@ -29,11 +29,34 @@ TEST(ProcessEngine, HelloOfThePythonExample) {
   const auto e = python();
   EXPECT_TRUE(e->capabilities().tri_tri);
   EXPECT_TRUE(e->capabilities().dynamics);
-  EXPECT_FALSE(e->capabilities().ccd_vertex_face);
+  EXPECT_TRUE(e->capabilities().ccd_vertex_face);
+  EXPECT_TRUE(e->capabilities().ccd_edge_edge);
+  EXPECT_FALSE(e->capabilities().segment_plane);
   EXPECT_EQ(e->claimed_order(), 2.0);
   EXPECT_TRUE(e->is_process());
   EXPECT_EQ(e->door(), "process `" + testing::kPythonEngine + "`");
   EXPECT_EQ(e->round_trips(), 1);
+}
+
+TEST(ProcessEngine, CcdQueriesGoInOneBatch) {
+  const auto e = python();
+  // A vertex falling through a still triangle's interior at t = 1/2, and the same vertex beside it.
+  CcdQuery through;
+  through.kind = CcdKind::VertexFace;
+  through.x0 = {Vec3(0.25, 0.25, 1), Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0)};
+  through.x1 = {Vec3(0.25, 0.25, -1), Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0)};
+  CcdQuery beside = through;
+  beside.x0[0] = Vec3(2, 2, 1);
+  beside.x1[0] = Vec3(2, 2, -1);
+  const long long before = e->round_trips();
+  const auto answers = e->ccd({through, beside, through});
+  EXPECT_EQ(e->round_trips(), before + 1);  // hello lists ccd_batch
+  ASSERT_EQ(answers.size(), 3u);
+  ASSERT_TRUE(answers[0] && answers[1] && answers[2]);
+  EXPECT_TRUE(answers[0]->hit);
+  EXPECT_NEAR(answers[0]->toi, 0.5, 1e-12);
+  EXPECT_FALSE(answers[1]->hit);
+  EXPECT_TRUE(answers[2]->hit);
 }
 
 TEST(ProcessEngine, EdgeTestOnHandWorkedPairs) {
