@@ -115,9 +115,11 @@ static void* euler_create(const tecido_scene* sc, char* why, size_t why_size) {
   memcpy(s->x, sc->positions, 3 * s->n * sizeof(double));
   memcpy(s->v, sc->velocities, 3 * s->n * sizeof(double));
   memcpy(s->inv_mass, sc->inverse_masses, s->n * sizeof(double));
-  memcpy(s->k, sc->spring_stiffness, s->m * sizeof(double));
-  memcpy(s->rest, sc->spring_rest_length, s->m * sizeof(double));
-  memcpy(s->ends, sc->spring_ends, 2 * s->m * sizeof(uint32_t));
+  if (s->m > 0) { /* the spring arrays may be NULL when there are none (plugin.h) */
+    memcpy(s->k, sc->spring_stiffness, s->m * sizeof(double));
+    memcpy(s->rest, sc->spring_rest_length, s->m * sizeof(double));
+    memcpy(s->ends, sc->spring_ends, 2 * s->m * sizeof(uint32_t));
+  }
   memcpy(s->g, sc->gravity, sizeof s->g);
   s->drag = sc->linear_drag;
   return s;

@@ -76,7 +76,8 @@ typedef struct tecido_plane {
  * Particle i is at positions[3i..3i+2]. inverse_masses[i] == 0 marks a pinned particle: it never
  * moves. Spring k joins spring_ends[2k] and spring_ends[2k+1] with force
  * stiffness (|xij| - rest_length) xij / |xij| on both ends. Forces per free particle: m g, -c v
- * (linear drag, c = linear_drag, 0 = none), springs. The arrays are valid during create() only. */
+ * (linear drag, c = linear_drag, 0 = none), springs. The arrays are valid during create() only;
+ * an array of zero entries (m = 0: no springs) may be NULL. */
 typedef struct tecido_scene {
   size_t particle_count;
   const double* positions;       /* 3n [m] */
