@@ -5,6 +5,18 @@
 
 namespace tecido::suites::ccd {
 
+void random_motion(CcdKind kind, Rng& r, double small_motion, std::size_t count, std::vector<KnownQuery>& out) {
+  for (std::size_t k = 0; k < count; ++k) {
+    KnownQuery kq;
+    kq.q.kind = kind;
+    for (int i = 0; i < 4; ++i) {
+      kq.q.x0[i] = r.in_box(0.0, 1.0);
+      kq.q.x1[i] = k % 2 ? kq.q.x0[i] + r.in_box(-small_motion, small_motion) : r.in_box(0.0, 1.0);
+    }
+    out.push_back(kq);
+  }
+}
+
 double dyadic(Rng& r, int lo, int hi, int den) {
   return static_cast<double>(lo + static_cast<int>(r.below(static_cast<std::uint64_t>(hi - lo + 1)))) / den;
 }

@@ -36,6 +36,10 @@ Vec3 dyadic_vec(Rng& r, int m, int den);
 /// x0 = at - t v, x1 = at + (1 - t) v.
 CcdQuery moving_through(CcdKind kind, double t, const std::array<Vec3, 4>& at, const std::array<Vec3, 4>& v);
 
+/// `count` queries of `kind` with unknown answers (the referee decides): points uniform in the unit
+/// cube at t = 0; at t = 1 uniform again (even k) or moved by at most `small_motion` per axis (odd k).
+void random_motion(CcdKind kind, Rng& r, double small_motion, std::size_t count, std::vector<KnownQuery>& out);
+
 /// A hit at t (known = 1) or a miss (known = 0).
 KnownQuery known_hit(const CcdQuery& q, double t);
 KnownQuery known_miss(const CcdQuery& q);

@@ -64,15 +64,7 @@ CcdQuery finish(Rng& r, const std::array<Vec3, 4>& x0, const std::array<Vec3, 4>
 }  // namespace
 
 void ee_random(Rng& r, const Settings& s, std::size_t count, std::vector<KnownQuery>& out) {
-  for (std::size_t k = 0; k < count; ++k) {
-    KnownQuery kq;
-    kq.q.kind = kEE;
-    for (int i = 0; i < 4; ++i) {
-      kq.q.x0[i] = r.in_box(0.0, 1.0);
-      kq.q.x1[i] = k % 2 ? kq.q.x0[i] + r.in_box(-s.small_motion, s.small_motion) : r.in_box(0.0, 1.0);
-    }
-    out.push_back(kq);
-  }
+  random_motion(kEE, r, s.small_motion, count, out);
 }
 
 void ee_crossing(Rng& r, const Settings&, std::size_t count, std::vector<KnownQuery>& out) {

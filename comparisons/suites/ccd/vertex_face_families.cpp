@@ -73,15 +73,7 @@ CcdQuery planar_query(Rng& r, const Tri2& t, const Vec2& p0, const Vec2& d) {
 }  // namespace
 
 void vf_random(Rng& r, const Settings& s, std::size_t count, std::vector<KnownQuery>& out) {
-  for (std::size_t k = 0; k < count; ++k) {
-    KnownQuery kq;
-    kq.q.kind = kVF;
-    for (int i = 0; i < 4; ++i) {
-      kq.q.x0[i] = r.in_box(0.0, 1.0);
-      kq.q.x1[i] = k % 2 ? kq.q.x0[i] + r.in_box(-s.small_motion, s.small_motion) : r.in_box(0.0, 1.0);
-    }
-    out.push_back(kq);
-  }
+  random_motion(kVF, r, s.small_motion, count, out);
 }
 
 void vf_crossing(Rng& r, const Settings&, std::size_t count, std::vector<KnownQuery>& out) {
