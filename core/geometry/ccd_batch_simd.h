@@ -1,15 +1,21 @@
 #pragma once
-/// Lane operations for core's batched continuous collision stages (ccd_batch_stages.cpp,
-/// ccd_batch_root.h): internal, included only by those kernels' source file.
+/// Lane operations for core's batched continuous collision stages (ccd_batch_stages.cpp):
+/// internal, included only by that source file.
 ///
 /// The kernels are written once against a small set of lane operations (a "Simd" traits
 /// class: loads, arithmetic, ordered comparisons giving masks, selection) and compiled three
 /// times: baseline (2 lanes, SSE2, through GCC vector types), AVX (4 lanes, GCC vector types)
 /// and AVX-512F (8 lanes, intrinsics: GCC 12 expands vector-type comparisons lane by lane
 /// there, as AVX-512F keeps comparison results in mask registers). Every lane runs the scalar
-/// code's operations in its order (IEEE-754, round to nearest); fp-contract is off in the wide
-/// functions so that no multiply-add is fused (AVX-512F has FMA; the baseline and AVX have none
-/// to fuse into).
+/// code's operations in its order (IEEE-754, round to nearest); no multiply-add is fused, as
+/// the build compiles with -ffp-contract=off (AVX-512F has FMA; the baseline and AVX have none).
+///
+/// Each width is its own copy of the templates (ccd_batch_kernels.inl, included once per width
+/// by ccd_batch_stages.cpp, each in its own namespace) compiled between
+/// TECIDO_BATCH_BEGIN_TARGET(...) and TECIDO_BATCH_END_TARGET, so that every function a wide
+/// kernel calls carries the kernel's instruction set: a wide vector never crosses a call
+/// between functions of different sets, which clang rejects (it checks the vector calling
+/// convention before inlining) and GCC warns about. The baseline copy has no target at all.
 #include <array>
 #include <cmath>
 #include <cstddef>
@@ -18,19 +24,20 @@
 #if defined(__GNUC__) && defined(__x86_64__)
 #define TECIDO_BATCH_X86 1
 #include <immintrin.h>
-#define TECIDO_BATCH_TARGET_AVX __attribute__((target("avx"), optimize("fp-contract=off"), flatten))
-#define TECIDO_BATCH_TARGET_AVX512 __attribute__((target("avx512f"), optimize("fp-contract=off"), flatten))
+#if defined(__clang__)
+#define TECIDO_BATCH_PRAGMA(x) _Pragma(#x)
+#define TECIDO_BATCH_BEGIN_TARGET(isa) \
+  TECIDO_BATCH_PRAGMA(clang attribute push(__attribute__((target(isa))), apply_to = function))
+#define TECIDO_BATCH_END_TARGET _Pragma("clang attribute pop")
+#else
+#define TECIDO_BATCH_PRAGMA(x) _Pragma(#x)
+#define TECIDO_BATCH_BEGIN_TARGET(isa) _Pragma("GCC push_options") TECIDO_BATCH_PRAGMA(GCC target(isa))
+#define TECIDO_BATCH_END_TARGET _Pragma("GCC pop_options")
+#endif
 #else
 #define TECIDO_BATCH_X86 0
 #endif
 #define TECIDO_BATCH_INLINE inline __attribute__((always_inline))
-
-// The helpers below pass wide vectors by value; they are internal and always inlined into the
-// kernel of their width, so no call ever crosses an ABI boundary: GCC's note that such a
-// signature's ABI differs without AVX does not apply.
-#if defined(__GNUC__) && !defined(__clang__)
-#pragma GCC diagnostic ignored "-Wpsabi"
-#endif
 
 namespace tecido {
 namespace ccd_batch {
@@ -40,40 +47,6 @@ template <int W>
 struct VecTypes {
   typedef double V __attribute__((vector_size(8 * W)));
   typedef long long K __attribute__((vector_size(8 * W)));
-};
-
-/// Lane operations on GCC vector types of W doubles; masks are vectors of -1 (true) / 0.
-template <int W>
-struct VecSimd {
-  static constexpr int kWidth = W;
-  static constexpr bool kTransposes = false;
-  using V = typename VecTypes<W>::V;
-  using K = typename VecTypes<W>::K;
-  static TECIDO_BATCH_INLINE V load(const double* p) {
-    V v;
-    std::memcpy(&v, p, sizeof v);
-    return v;
-  }
-  static TECIDO_BATCH_INLINE V set1(double x) { return V{} + x; }
-  static TECIDO_BATCH_INLINE void store(double* p, V v) { std::memcpy(p, &v, sizeof v); }
-  static TECIDO_BATCH_INLINE V floor(V v) {
-    for (int l = 0; l < W; ++l) v[l] = std::floor(v[l]);
-    return v;
-  }
-  static TECIDO_BATCH_INLINE K lt(V a, V b) { return a < b; }
-  static TECIDO_BATCH_INLINE K le(V a, V b) { return a <= b; }
-  static TECIDO_BATCH_INLINE V select(K k, V a, V b) { return k ? a : b; }
-  static TECIDO_BATCH_INLINE V abs(V v) { return reinterpret_cast<V>(reinterpret_cast<K>(v) & 0x7FFFFFFFFFFFFFFFLL); }
-  static TECIDO_BATCH_INLINE K all() { return ~K{}; }
-  static TECIDO_BATCH_INLINE K none() { return K{}; }
-  static TECIDO_BATCH_INLINE K kand(K a, K b) { return a & b; }
-  static TECIDO_BATCH_INLINE K kor(K a, K b) { return a | b; }
-  static TECIDO_BATCH_INLINE K knot(K a) { return ~a; }
-  static TECIDO_BATCH_INLINE unsigned bits(K k) {
-    unsigned m = 0;
-    for (int l = 0; l < W; ++l) m |= (k[l] != 0 ? 1u : 0u) << l;
-    return m;
-  }
 };
 
 #if TECIDO_BATCH_X86
@@ -131,38 +104,6 @@ struct Avx512Simd {
   }
 };
 #endif
-
-/// std::min and std::max, lane by lane: the same choice (exact either way for finite input).
-template <class S>
-TECIDO_BATCH_INLINE typename S::V vmin(typename S::V a, typename S::V b) {
-  return S::select(S::lt(b, a), b, a);
-}
-template <class S>
-TECIDO_BATCH_INLINE typename S::V vmax(typename S::V a, typename S::V b) {
-  return S::select(S::lt(a, b), b, a);
-}
-
-/// The points of one block of queries in registers: p[time][point][coordinate], one lane per
-/// query (points in the order of ccd_query.h).
-template <class S>
-struct Points {
-  typename S::V p[2][4][3];
-};
-
-/// A 3-vector of lanes (templated on the traits: GCC ignores the attributes of __m512d as a
-/// template argument).
-template <class S>
-struct V3 {
-  typename S::V x, y, z;
-};
-template <class S>
-TECIDO_BATCH_INLINE V3<S> cross(const V3<S>& a, const V3<S>& b) {
-  return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
-}
-template <class S>
-TECIDO_BATCH_INLINE typename S::V dot(const V3<S>& a, const V3<S>& b) {
-  return a.x * b.x + a.y * b.y + a.z * b.z;
-}
 
 }  // namespace ccd_batch
 }  // namespace tecido

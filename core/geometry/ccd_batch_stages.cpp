@@ -1,12 +1,13 @@
 #include "core/geometry/ccd_batch_stages.h"
 
-#include "core/geometry/ccd_batch_root.h"
 #include "core/geometry/ccd_batch_simd.h"
 
 #include "core/platform/simd_level.h"
 
 #include <algorithm>
+#include <array>
 #include <cstddef>
+#include <cstdint>
 #include <cstring>
 
 namespace tecido {
@@ -15,269 +16,26 @@ namespace {
 
 using namespace ccd_batch;
 
-/// The points of one block of queries, lane by lane: p[time][point][coordinate][lane].
-template <int W>
-struct Staged {
-  alignas(64) double p[2][4][3][W];
-};
-
-/// Writes the points of queries q[0 .. n) into s (lanes n .. W repeat the last query).
-template <int W>
-TECIDO_BATCH_INLINE void stage(const double* x0, const double* x1, std::size_t stride, const std::array<int, 4>* q,
-                               int n, Staged<W>& s) {
-  for (int l = 0; l < W; ++l) {
-    const std::array<int, 4>& qq = q[l < n ? l : n - 1];
-    for (int pt = 0; pt < 4; ++pt) {
-      const std::size_t at = stride * static_cast<std::size_t>(qq[pt]);
-      for (int c = 0; c < 3; ++c) {
-        s.p[0][pt][c][l] = x0[at + c];
-        s.p[1][pt][c][l] = x1[at + c];
-      }
-    }
-  }
-}
-
-template <class S>
-TECIDO_BATCH_INLINE void load_staged(const Staged<S::kWidth>& s, Points<S>& out) {
-  for (int t = 0; t < 2; ++t)
-    for (int pt = 0; pt < 4; ++pt)
-      for (int c = 0; c < 3; ++c) out.p[t][pt][c] = S::load(s.p[t][pt][c]);
-}
-
-/// Boxes of two primitives at both frames: lo[frame][coordinate], hi likewise, per lane.
-template <class S>
-struct PairBoxes {
-  typename S::V alo[2][3], ahi[2][3], blo[2][3], bhi[2][3];
-};
-
-/// The primitives' boxes of one block (ccd_pipeline.cpp's box_of: exact minima and maxima).
-/// Kind K: 0 vertex-face (first primitive: point 0), 1 edge-edge (points 0 and 1).
-template <class S, int K>
-TECIDO_BATCH_INLINE void boxes_of(const Points<S>& s, PairBoxes<S>& b) {
-  for (int t = 0; t < 2; ++t) {
-    for (int c = 0; c < 3; ++c) {
-      const auto p0 = s.p[t][0][c], p1 = s.p[t][1][c];
-      const auto p2 = s.p[t][2][c], p3 = s.p[t][3][c];
-      if (K == 0) {
-        b.alo[t][c] = b.ahi[t][c] = p0;
-        b.blo[t][c] = vmin<S>(p1, vmin<S>(p2, p3));
-        b.bhi[t][c] = vmax<S>(p1, vmax<S>(p2, p3));
-      } else {
-        b.alo[t][c] = vmin<S>(p0, p1);
-        b.ahi[t][c] = vmax<S>(p0, p1);
-        b.blo[t][c] = vmin<S>(p2, p3);
-        b.bhi[t][c] = vmax<S>(p2, p3);
-      }
-    }
-  }
-}
-
-/// Swept boxes disjoint (ccd_pipeline.cpp's box_stages: the union of the two frames' boxes,
-/// exact comparisons).
-template <class S>
-TECIDO_BATCH_INLINE typename S::K swept_disjoint(const PairBoxes<S>& b) {
-  typename S::K dis = S::none();
-  for (int c = 0; c < 3; ++c) {
-    const auto alo = vmin<S>(b.alo[0][c], b.alo[1][c]), ahi = vmax<S>(b.ahi[0][c], b.ahi[1][c]);
-    const auto blo = vmin<S>(b.blo[0][c], b.blo[1][c]), bhi = vmax<S>(b.bhi[0][c], b.bhi[1][c]);
-    dis = S::kor(dis, S::kor(S::lt(ahi, blo), S::lt(bhi, alo)));
-  }
-  return dis;
-}
-
-/// The boxes overlap at t = 0 or at t = 1 (ccd_kinetic_boxes.cpp's first line): then the
-/// kinetic test answers "not disjoint".
-template <class S>
-TECIDO_BATCH_INLINE typename S::K overlap_at_a_frame(const PairBoxes<S>& b) {
-  typename S::K ov[2];
-  for (int t = 0; t < 2; ++t) {
-    ov[t] = S::all();
-    for (int c = 0; c < 3; ++c)
-      ov[t] = S::kand(ov[t], S::kand(S::le(b.alo[t][c], b.bhi[t][c]), S::le(b.blo[t][c], b.ahi[t][c])));
-  }
-  return S::kor(ov[0], ov[1]);
-}
-
-/// The rest of ccd_kinetic_boxes_disjoint (after its first line), lane by lane: the same
-/// operations in the same order, its early returns turned into masks (they select, they do
-/// not change any value computed).
-template <class S>
-TECIDO_BATCH_INLINE typename S::K kinetic_program_infeasible(const PairBoxes<S>& b) {
-  using V = typename S::V;
-  using K = typename S::K;
-  const V zero = S::set1(0.0);
-  K both_negative = S::none(), at0 = S::all(), at1 = S::all();
-  V lower = zero, upper = S::set1(1.0);
-  for (int c = 0; c < 3; ++c) {
-    const V v0[2] = {b.bhi[0][c] - b.alo[0][c], b.ahi[0][c] - b.blo[0][c]};
-    const V v1[2] = {b.bhi[1][c] - b.alo[1][c], b.ahi[1][c] - b.blo[1][c]};
-    for (int k = 0; k < 2; ++k) {
-      const V m = S::set1(0x1p-50) * vmax<S>(S::abs(v0[k]), S::abs(v1[k]));
-      const V a = v0[k] + m, e = v1[k] + m;
-      const K a_neg = S::lt(a, zero), e_neg = S::lt(e, zero);
-      both_negative = S::kor(both_negative, S::kand(a_neg, e_neg));
-      at0 = S::kand(at0, S::le(zero, a));
-      at1 = S::kand(at1, S::le(zero, e));
-      const K falling = S::kand(S::knot(a_neg), e_neg);
-      lower = S::select(a_neg, vmax<S>(lower, ((zero - a) / (e - a)) * S::set1(1.0 - 0x1p-50)), lower);
-      upper = S::select(falling, vmin<S>(upper, (a / (a - e)) * S::set1(1.0 + 0x1p-50)), upper);
-    }
-  }
-  return S::kor(both_negative, S::kand(S::knot(S::kor(at0, at1)), S::lt(upper, lower)));
-}
-
-/// The cubic's verdict (ccd_system.h's differences, ccd_coplanarity_cubic.cpp's coefficients
-/// and cheap bound, ccd_bernstein.h's certified sign), where ccd's scale is 1.
-template <class S, int K>
-TECIDO_BATCH_INLINE typename S::K cubic_miss(const Points<S>& s, unsigned& unscaled_lanes) {
-  using V = typename S::V;
-  // Difference vectors X, Y, Z as (minuend, subtrahend) points (ccd_system.cpp's kPairs).
-  constexpr int kPairs[2][3][2] = {{{2, 1}, {3, 1}, {0, 1}}, {{1, 0}, {2, 3}, {2, 0}}};
-  V3<S> d[2][3];
-  V m[3];
-  for (int v = 0; v < 3; ++v) {
-    m[v] = S::set1(0.0);
-    for (int t = 0; t < 2; ++t) {
-      V e[3];
-      for (int c = 0; c < 3; ++c) {
-        e[c] = s.p[t][kPairs[K][v][0]][c] - s.p[t][kPairs[K][v][1]][c];
-        m[v] = vmax<S>(m[v], S::abs(e[c]));
-      }
-      d[t][v] = {e[0], e[1], e[2]};
-    }
-  }
-  const V3<S>&x0 = d[0][0], &x1 = d[1][0], &y0 = d[0][1], &y1 = d[1][1], &z0 = d[0][2], &z1 = d[1][2];
-  const V3<S> c00 = cross(y0, z0), c11 = cross(y1, z1);
-  const V3<S> a = cross(y1, z0), b = cross(y0, z1);
-  const V3<S> sum = {a.x + b.x, a.y + b.y, a.z + b.z};
-  const V three = S::set1(3.0);
-  const V f0 = dot(x0, c00);
-  const V f1 = (dot(x1, c00) + dot(x0, sum)) / three;
-  const V f2 = (dot(x0, c11) + dot(x1, sum)) / three;
-  const V f3 = dot(x1, c11);
-  const V e0 = S::set1(0x1p-49 * (6.0 * (1.0 + 0x1p-50))) * (m[0] * m[1] * m[2]) + S::set1(0x1p-900);
-  const V lo = vmin<S>(vmin<S>(f0, f1), vmin<S>(f2, f3)), hi = vmax<S>(vmax<S>(f0, f1), vmax<S>(f2, f3));
-  const V big = vmax<S>(m[0], vmax<S>(m[1], m[2]));
-  const auto unscaled = S::kand(S::le(S::set1(0x1p-128), big), S::le(big, S::set1(0x1p125)));
-  unscaled_lanes = S::bits(unscaled);
-  return S::kand(unscaled, S::kor(S::lt(e0, lo), S::lt(hi, S::set1(0.0) - e0)));
-}
-
-/// The first stages' verdicts of one block of queries (lanes valid of them); returns the
-/// lanes left open where ccd's scale is 1 (for root_decisions).
-template <class S, int K>
-TECIDO_BATCH_INLINE unsigned decide_block(const Points<S>& s, int lanes, bool cubic, std::uint8_t* verdict) {
-  constexpr int W = S::kWidth;
-  PairBoxes<S> b;
-  boxes_of<S, K>(s, b);
-  unsigned disjoint = S::bits(swept_disjoint<S>(b));
-  // The linear program only where some lane needs it (most neighbours overlap at a frame).
-  const unsigned open = ~disjoint & ~S::bits(overlap_at_a_frame<S>(b)) & ((1u << W) - 1);
-  if (open) disjoint |= open & S::bits(kinetic_program_infeasible<S>(b));
-  const unsigned open_lanes = ~disjoint & ((1u << lanes) - 1);
-  unsigned unscaled = 0;
-  const unsigned miss = cubic && open_lanes ? open_lanes & S::bits(cubic_miss<S, K>(s, unscaled)) : 0u;
-  for (int l = 0; l < lanes; ++l)
-    verdict[l] = static_cast<std::uint8_t>(((disjoint >> l) & 1u ? kCcdBoxesDisjoint : 0) |
-                                           ((miss >> l) & 1u ? kCcdCubicMiss : 0));
-  return open_lanes & ~miss & unscaled;
-}
-
-/// Where the points come from: two arrays with a stride, or (records) both frames interleaved
-/// in 64-byte vertex records, which the AVX-512 traits transpose in registers.
-struct Source {
-  const double *x0, *x1;
-  std::size_t stride;
-  bool records;
-};
-
-/// The points of queries q[0 .. n) (lanes n .. W repeat the last), through memory when the
-/// traits do not transpose records.
-template <class S>
-TECIDO_BATCH_INLINE void load_points(const Source& src, const std::array<int, 4>* q, int n, Points<S>& pts) {
-  if constexpr (S::kTransposes) {
-    if (src.records) {
-      S::load_records(src.x0, q, n, pts);
-      return;
-    }
-  }
-  Staged<S::kWidth> st;
-  stage<S::kWidth>(src.x0, src.x1, src.stride, q, n, st);
-  load_staged<S>(st, pts);
-}
-
-/// Queries the first stages left open, gathered into full blocks for root_decisions (which
-/// costs a block whatever the number of lanes it decides).
-template <class S>
-struct RootQueue {
-  std::array<int, 4> q[S::kWidth];
-  int at[S::kWidth];
-  int n = 0;
-};
-
-template <class S, int K>
-TECIDO_BATCH_INLINE void run_root(const Source& src, RootQueue<S>& rq, std::uint8_t* verdict) {
-  if (rq.n == 0) return;
-  Points<S> pts;
-  load_points<S>(src, rq.q, rq.n, pts);
-  unsigned miss = 0, hit = 0;
-  root_decisions<S, K>(pts, (1u << rq.n) - 1, miss, hit);
-  for (int l = 0; l < rq.n; ++l)
-    verdict[rq.at[l]] |= static_cast<std::uint8_t>(((miss >> l) & 1u ? kCcdRootMiss : 0) | ((hit >> l) & 1u ? kCcdRootHit : 0));
-  rq.n = 0;
-}
-
-/// The verdicts of queries q[0 .. n) of kind K.
-template <class S, int K>
-TECIDO_BATCH_INLINE void run_blocks(const double* x0, const double* x1, std::size_t stride, const std::array<int, 4>* q,
-                                    int n, bool cubic, std::uint8_t* verdict) {
-  constexpr int W = S::kWidth;
-  const Source src{x0, x1, stride, S::kTransposes && x1 == x0 + 3 && stride == 8};
-  Points<S> pts;
-  RootQueue<S> rq;
-  // Double-buffered when staged through memory: the next block's points are written while this
-  // block's, written one block earlier, are read back as vectors (a wide load of fresh narrow
-  // stores would wait for them to leave the store buffer).
-  Staged<W> staged[2];
-  if (!src.records) stage<W>(x0, x1, stride, q, std::min(W, n), staged[0]);
-  for (int k = 0, buf = 0; k < n; k += W, buf ^= 1) {
-    const int lanes = std::min(W, n - k);
-    if (src.records) {
-      load_points<S>(src, q + k, lanes, pts);
-    } else {
-      if (k + W < n) stage<W>(x0, x1, stride, q + k + W, std::min(W, n - k - W), staged[buf ^ 1]);
-      load_staged<S>(staged[buf], pts);
-    }
-    for (unsigned open = decide_block<S, K>(pts, lanes, cubic, verdict + k); open; open &= open - 1) {
-      const int l = __builtin_ctz(open);
-      rq.q[rq.n] = q[k + l];
-      rq.at[rq.n++] = k + l;
-      if (rq.n == W) run_root<S, K>(src, rq, verdict);
-    }
-  }
-  run_root<S, K>(src, rq, verdict);
-}
+// One copy of the kernels per width, each in its own namespace; the wide copies are compiled
+// for their instruction set, the baseline copy for the build's (ccd_batch_simd.h).
+namespace lanes2 {
+#include "core/geometry/ccd_batch_kernels.inl"
+}  // namespace lanes2
+#if TECIDO_BATCH_X86
+TECIDO_BATCH_BEGIN_TARGET("avx")
+namespace lanes4 {
+#include "core/geometry/ccd_batch_kernels.inl"
+}  // namespace lanes4
+TECIDO_BATCH_END_TARGET
+TECIDO_BATCH_BEGIN_TARGET("avx512f")
+namespace lanes8 {
+#include "core/geometry/ccd_batch_kernels.inl"
+}  // namespace lanes8
+TECIDO_BATCH_END_TARGET
+#endif
 
 using StagesKernel = void (*)(const double*, const double*, std::size_t, const std::array<int, 4>*, int, bool,
                               std::uint8_t*);
-
-template <class S, int K>
-void stages(const double* x0, const double* x1, std::size_t stride, const std::array<int, 4>* q, int n, bool cubic,
-            std::uint8_t* out) {
-  run_blocks<S, K>(x0, x1, stride, q, n, cubic, out);
-}
-#if TECIDO_BATCH_X86
-template <class S, int K>
-TECIDO_BATCH_TARGET_AVX void stages_avx(const double* x0, const double* x1, std::size_t stride,
-                                        const std::array<int, 4>* q, int n, bool cubic, std::uint8_t* out) {
-  run_blocks<S, K>(x0, x1, stride, q, n, cubic, out);
-}
-template <int K>
-TECIDO_BATCH_TARGET_AVX512 void stages_avx512(const double* x0, const double* x1, std::size_t stride,
-                                              const std::array<int, 4>* q, int n, bool cubic, std::uint8_t* out) {
-  run_blocks<Avx512Simd, K>(x0, x1, stride, q, n, cubic, out);
-}
-#endif
 
 }  // namespace
 
@@ -301,10 +59,11 @@ void ccd_batch_first_stages(CcdKind kind, const double* x0, const double* x1, st
   if (n <= 0) return;
   if (width == 0) width = ccd_batch_widest();
   const bool vf = kind == CcdKind::VertexFace;
-  StagesKernel k = vf ? &stages<VecSimd<2>, 0> : &stages<VecSimd<2>, 1>;
+  using lanes2::VecSimd;
+  StagesKernel k = vf ? &lanes2::stages<VecSimd<2>, 0> : &lanes2::stages<VecSimd<2>, 1>;
 #if TECIDO_BATCH_X86
-  if (width == 4) k = vf ? &stages_avx<VecSimd<4>, 0> : &stages_avx<VecSimd<4>, 1>;
-  if (width == 8) k = vf ? &stages_avx512<0> : &stages_avx512<1>;
+  if (width == 4) k = vf ? &lanes4::stages<lanes4::VecSimd<4>, 0> : &lanes4::stages<lanes4::VecSimd<4>, 1>;
+  if (width == 8) k = vf ? &lanes8::stages<Avx512Simd, 0> : &lanes8::stages<Avx512Simd, 1>;
 #endif
   k(x0, x1, stride, queries, n, cubic, verdict);
 }

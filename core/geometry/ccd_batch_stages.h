@@ -25,7 +25,7 @@
 /// system's "all points coincide" case has f = 0, which no bound certifies), so a caller may
 /// act on any verdict in any order and still give ccd's answer.
 /// The queries they leave open where ccd's scale is 1 are gathered into full blocks and the
-/// root of ccd's time search is replayed on them (ccd_batch_root.h: the cubic's permanent
+/// root of ccd's time search is replayed on them (ccd_batch_root.inl: the cubic's permanent
 /// bound, the projected quadratics, rule 2, rule J with its Newton iteration and bracket): where
 /// ccd decides there, the verdict says miss or hit, ccd's answer; elsewhere nothing (the caller
 /// runs ccd, which decides deeper). Replayed only for core's default settings.
@@ -44,7 +44,7 @@ namespace tecido {
 enum CcdBatchVerdict : std::uint8_t {
   kCcdBoxesDisjoint = 1,  ///< swept or kinetic boxes disjoint: ccd answers miss at its stage 2
   kCcdCubicMiss = 2,      ///< boxes not disjoint, the cubic certainly nonzero on [0, 1] (cheap bound, unscaled): ccd answers miss
-  kCcdRootMiss = 4,       ///< neither, and ccd's time search answers miss at its root (ccd_batch_root.h)
+  kCcdRootMiss = 4,       ///< neither, and ccd's time search answers miss at its root (ccd_batch_root.inl)
   kCcdRootHit = 8,        ///< neither, and ccd's time search answers hit at its root
 };
 

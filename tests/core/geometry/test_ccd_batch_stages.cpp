@@ -245,7 +245,7 @@ TEST(CcdBatchStages, DecidesAsCcdsOwnStagesAtEveryWidth) {
 }
 
 TEST(CcdBatchStages, RootDecisionsAreCcdsAndTheSameAtEveryWidth) {
-  // The root of the time search replayed (ccd_batch_root.h): a lane it decides must be one ccd
+  // The root of the time search replayed (ccd_batch_root.inl): a lane it decides must be one ccd
   // answers the same way, within its first node (or by the cubic's permanent bound) and
   // without the inclusion search; every width decides the same lanes the same way.
   for (CcdKind kind : {CcdKind::VertexFace, CcdKind::EdgeEdge}) {

@@ -1,4 +1,3 @@
-#pragma once
 /// The decisions core's continuous collision test (ccd.h) takes at the root of its time search,
 /// [0, 1], replayed on a block of queries, one per SIMD lane (ccd_batch_simd.h): internal to
 /// ccd_batch_stages.cpp, which runs them on the queries its first stages leave open.
@@ -23,10 +22,8 @@
 ///     certain sign there, or neither, goes to ccd's inclusion search: open.
 /// Not applicable rule J, no certified bracket: open (ccd goes on splitting [0, 1]).
 /// Only the decision is replayed, not the time of impact.
-#include "core/geometry/ccd_batch_simd.h"
-
-namespace tecido {
-namespace ccd_batch {
+// Included by ccd_batch_kernels.inl only, once per width, inside that width's namespace and
+// target region (ccd_batch_simd.h says why): no include guard, no includes, no namespace.
 
 /// The five difference vectors X, Y, Z, P, Q of ccd_system.h at both times.
 template <class S>
@@ -327,6 +324,3 @@ TECIDO_BATCH_INLINE void root_decisions(const Points<S>& pts, unsigned lanes, un
   hit |= bracketed & refined;  // every numerator inside: refine()'s jump, a hit at the bracket
   if (bracketed & ~refined) bracket_decision<S, kCount>(q, kn, sa, sb, bracketed & ~refined, miss, hit);
 }
-
-}  // namespace ccd_batch
-}  // namespace tecido
