@@ -156,15 +156,25 @@ bool run_and_kill(const std::vector<std::string>& args, double delay) {
   return WIFSIGNALED(status) && WTERMSIG(status) == SIGKILL;
 }
 
-/// Files left in `dir` besides the expected ones must be temporary files <name>.tmp.<pid>.
+/// A temporary file's name: <name>.tmp.<pid> (gnuplot.cpp) or <name>.tmp.<pid>.<n> (atomic_file.cpp).
+bool is_temporary_name(const std::string& name) {
+  const auto at = name.rfind(".tmp.");
+  if (at == std::string::npos) return false;
+  const std::string rest = name.substr(at + 5);
+  const auto dot = rest.find('.');
+  const auto digits = [](const std::string& d) {
+    return !d.empty() && d.find_first_not_of("0123456789") == std::string::npos;
+  };
+  return dot == std::string::npos ? digits(rest) : digits(rest.substr(0, dot)) && digits(rest.substr(dot + 1));
+}
+
+/// Files left in `dir` besides the expected ones must be temporary files (is_temporary_name).
 void expect_only_known_files(const fs::path& dir, const std::vector<std::string>& finals) {
   if (!fs::exists(dir)) return;
   for (const auto& e : fs::recursive_directory_iterator(dir)) {
     if (!e.is_regular_file()) continue;
     const std::string name = e.path().filename().string();
-    const auto dot = name.rfind(".tmp.");
-    bool known = dot != std::string::npos && dot + 5 < name.size() &&
-                 name.find_first_not_of("0123456789", dot + 5) == std::string::npos;
+    bool known = is_temporary_name(name);
     for (const auto& f : finals) known = known || name == f;
     const std::string ext = e.path().extension().string();
     known = known || ext == ".dat" || ext == ".gp" || ext == ".svg" || ext == ".obj" || ext == ".vtk" || ext == ".json";
@@ -179,6 +189,16 @@ std::vector<double> kill_fractions(double full) {
 }
 
 std::string tail(const std::string& s, std::size_t n) { return s.size() <= n ? s : s.substr(s.size() - n); }
+
+TEST(LongRun, TemporaryNamesAreThoseTheWritersMake) {
+  EXPECT_TRUE(is_temporary_name("result.json.tmp.4711"));
+  EXPECT_TRUE(is_temporary_name("frame_0003.obj.tmp.4711.12"));
+  EXPECT_FALSE(is_temporary_name("result.json"));
+  EXPECT_FALSE(is_temporary_name("result.json.tmp."));
+  EXPECT_FALSE(is_temporary_name("result.json.tmp.47x1"));
+  EXPECT_FALSE(is_temporary_name("result.json.tmp.4711."));
+  EXPECT_FALSE(is_temporary_name("result.json.tmp.4711.1.2"));
+}
 
 TEST(LongRun, KilledSuiteLeavesNoHalfWrittenReport) {
   const auto dir = testing::temp_dir("kill-suite");
