@@ -57,27 +57,9 @@ BoxEntry segment_enters_box(const Vec3& q0, const Vec3& q1, const Vec3& h) {
 
 double segment_box_depth(const Vec3& q0, const Vec3& q1, const Vec3& h) {
   if (!segment_enters_box(q0, q1, h).hit && !inside_box(q0, h)) return 0.0;
-  const Vec3 d = q1 - q0;
-  // The six pieces: h_i - sigma q_i(s) = (h_i - sigma q0_i) - sigma d_i s, sigma = +-1.
-  double c0[6], c1[6];
-  for (int i = 0; i < 3; ++i)
-    for (int k = 0; k < 2; ++k) {
-      const double sigma = k ? 1.0 : -1.0;
-      c0[2 * i + k] = h[i] - sigma * q0[i];
-      c1[2 * i + k] = -sigma * d[i];
-    }
-  auto depth = [&](double s) {
-    double m = std::numeric_limits<double>::infinity();
-    for (int k = 0; k < 6; ++k) m = std::min(m, c0[k] + c1[k] * s);
-    return m;
-  };
-  double best = std::max(depth(0.0), depth(1.0));
-  for (int a = 0; a < 6; ++a)
-    for (int b = a + 1; b < 6; ++b) {
-      if (c1[a] == c1[b]) continue;
-      const double s = (c0[b] - c0[a]) / (c1[a] - c1[b]);
-      if (s > 0.0 && s < 1.0) best = std::max(best, depth(s));
-    }
+  const SegmentDepthProfile depth(q0, q1, h);
+  double best = depth.at(0.0);
+  depth.for_each_candidate([&](double s) { best = std::max(best, depth.at(s)); });
   return std::max(best, 0.0);
 }
 

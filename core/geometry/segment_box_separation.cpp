@@ -9,32 +9,12 @@
 namespace tecido {
 
 double segment_box_deepest(const Vec3& q0, const Vec3& q1, const Vec3& h) {
-  const Vec3 d = q1 - q0;
-  double c0[6], c1[6];
-  for (int i = 0; i < 3; ++i)
-    for (int k = 0; k < 2; ++k) {
-      const double sigma = k ? 1.0 : -1.0;
-      c0[2 * i + k] = h[i] - sigma * q0[i];
-      c1[2 * i + k] = -sigma * d[i];
-    }
-  auto depth = [&](double s) {
-    double m = std::numeric_limits<double>::infinity();
-    for (int k = 0; k < 6; ++k) m = std::min(m, c0[k] + c1[k] * s);
-    return m;
-  };
-  double best_s = 0.5, best = depth(0.5);
-  auto consider = [&](double s) {
-    const double v = depth(s);
+  const SegmentDepthProfile depth(q0, q1, h);
+  double best_s = 0.5, best = depth.at(0.5);
+  depth.for_each_candidate([&](double s) {
+    const double v = depth.at(s);
     if (v > best) best = v, best_s = s;
-  };
-  consider(0.0);
-  consider(1.0);
-  for (int a = 0; a < 6; ++a)
-    for (int b = a + 1; b < 6; ++b) {
-      if (c1[a] == c1[b]) continue;
-      const double s = (c0[b] - c0[a]) / (c1[a] - c1[b]);
-      if (s > 0.0 && s < 1.0) consider(s);
-    }
+  });
   return best_s;
 }
 
