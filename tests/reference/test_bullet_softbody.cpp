@@ -20,28 +20,8 @@ namespace {
 
 const Vec3 kGravity(0, 0, -9.81);
 
-// A curtain: rows hang down -z from the pinned top row, 0.3 m x 0.3 m, 0.1 kg, type B springs
-// only, so its sag is set by stretch (what kLST controls), not by geometry.
-Scene curtain(int n, double ks, double dt) {
-  Scene s;
-  s.dt = dt;
-  s.forces.gravity = kGravity;
-  ClothGridSpec c;
-  c.rows = n;
-  c.cols = n;
-  c.spacing = 0.3 / (n - 1);
-  c.origin = Vec3(0, 0, 1);
-  c.axis_u = Vec3::UnitX();
-  c.axis_v = -Vec3::UnitZ();
-  c.total_mass = 0.1;
-  c.stiffness_b = ks;
-  for (int col = 0; col < n; ++col) c.pins.push_back({0, col});
-  append_cloth(s, c);
-  return s;
-}
-
 TEST(BulletClassic, NodesAreCoreParticlesInOrder) {
-  Scene s = curtain(5, 100.0, 1e-3);
+  Scene s = testing::stretch_curtain(5, 100.0, 1e-3);
   s.particles.x[5] += Vec3(0.001, 0.002, -0.003);  // break the grid's regularity (row 1, col 0)
   ClassicSoftBodyOptions o;
   o.klst = 0.005;  // soft enough that every free node visibly sags
@@ -63,7 +43,7 @@ TEST(BulletClassic, NodesAreCoreParticlesInOrder) {
 }
 
 TEST(BulletClassic, ReportsWhatItModelsDifferently) {
-  Scene s = curtain(4, 100.0, 1e-3);
+  Scene s = testing::stretch_curtain(4, 100.0, 1e-3);
   s.forces.air_drag = 0.01;
   s.forces.springs[0].damping = 0.1;
   ClassicSoftBody sb(s);

@@ -19,30 +19,8 @@
 namespace tecido::reference {
 namespace {
 
-const Vec3 kGravity(0, 0, -9.81);
-
-// A curtain: rows hang down -z from the pinned top row, 0.3 m x 0.3 m, 0.1 kg, type B springs
-// only, so its sag is set by stretch (what kLST controls), not by geometry.
-Scene curtain(int n, double ks, double dt) {
-  Scene s;
-  s.dt = dt;
-  s.forces.gravity = kGravity;
-  ClothGridSpec c;
-  c.rows = n;
-  c.cols = n;
-  c.spacing = 0.3 / (n - 1);
-  c.origin = Vec3(0, 0, 1);
-  c.axis_u = Vec3::UnitX();
-  c.axis_v = -Vec3::UnitZ();
-  c.total_mass = 0.1;
-  c.stiffness_b = ks;
-  for (int col = 0; col < n; ++col) c.pins.push_back({0, col});
-  append_cloth(s, c);
-  return s;
-}
-
 TEST(KlstCalibration, MeanSagIsTheMeanDropOfTheFreeNodes) {
-  Scene s = curtain(3, 100.0, 1e-3);  // 3 pinned nodes, 6 free
+  Scene s = testing::stretch_curtain(3, 100.0, 1e-3);  // 3 pinned nodes, 6 free
   std::vector<Vec3> x = s.particles.x;
   for (int i = 3; i < 9; ++i) x[i].z() -= 0.001 * i;  // drops 3..8 mm: mean 5.5 mm
   x[0].z() -= 1.0;                                   // a pinned node moving does not count
@@ -54,7 +32,7 @@ TEST(KlstCalibration, MeanSagIsTheMeanDropOfTheFreeNodes) {
 // The acceptance case: calibrate kLST so Bullet's settled sag matches core's, then settle a
 // fresh classic body with that kLST and compare sags.
 TEST(KlstCalibration, CalibratedHangingClothSagMatchesCore) {
-  const Scene scene = curtain(6, 100.0, 1e-3);
+  const Scene scene = testing::stretch_curtain(6, 100.0, 1e-3);
   SagCalibrationOptions opt;  // piterations 10, kDP 0.05, core drag 10/s x mean mass
   SagCalibration cal;
   const double klst = calibrate_klst_for_sag(scene, opt, &cal);
@@ -95,7 +73,7 @@ TEST(KlstCalibration, CalibratedHangingClothSagMatchesCore) {
 
 // A step too large for core's springs: the calibration must fail loudly, not match a NaN sag.
 TEST(KlstCalibration, CalibrationRefusesAnUnstableCoreRun) {
-  const Scene scene = curtain(6, 100.0, 1.0 / 240.0);
+  const Scene scene = testing::stretch_curtain(6, 100.0, 1.0 / 240.0);
   EXPECT_THROW(calibrate_klst_for_sag(scene), std::runtime_error);
 }
 
@@ -104,7 +82,7 @@ TEST(KlstCalibration, CalibrationRefusesAnUnstableCoreRun) {
 // splits each correction by ratios of inverse masses, and halving them is exact), while core's Hooke
 // sag nearly doubles: a kLST calibrated at one load does not hold at another.
 TEST(KlstCalibration, ClassicShapeDoesNotDependOnTheLoadButCoresDoes) {
-  const Scene light = curtain(6, 100.0, 1e-3);
+  const Scene light = testing::stretch_curtain(6, 100.0, 1e-3);
   Scene heavy = light;
   for (double& w : heavy.particles.inv_mass) w *= 0.5;
   SagCalibrationOptions o;

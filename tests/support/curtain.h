@@ -32,6 +32,27 @@ inline Scene curtain(int n) {
   return s;
 }
 
+/// The classic soft body's calibration curtain (test_klst_calibration, test_bullet_softbody): n x n
+/// nodes hanging down -z from the pinned top row, 0.3 m x 0.3 m, 0.1 kg, type B springs ks only,
+/// so its sag is set by stretch (what kLST controls), not by geometry; gravity -9.81 z, step dt.
+inline Scene stretch_curtain(int n, double ks, double dt) {
+  Scene s;
+  s.dt = dt;
+  s.forces.gravity = Vec3(0, 0, -9.81);
+  ClothGridSpec c;
+  c.rows = n;
+  c.cols = n;
+  c.spacing = 0.3 / (n - 1);
+  c.origin = Vec3(0, 0, 1);
+  c.axis_u = Vec3::UnitX();
+  c.axis_v = -Vec3::UnitZ();
+  c.total_mass = 0.1;
+  c.stiffness_b = ks;
+  for (int col = 0; col < n; ++col) c.pins.push_back({0, col});
+  append_cloth(s, c);
+  return s;
+}
+
 constexpr int kCurtainN = 8;
 inline const double kCurtainH0 = std::ldexp(1.0, -6);  // [s]
 constexpr double kCurtainT = 1.0;                      // [s]
