@@ -35,15 +35,10 @@ static_assert(TriangleBvh::kWidth == 4, "kLaterLanes and the SSE paths assume fo
 inline int lowest_bit(unsigned m) { return __builtin_ctz(m); }
 
 #if TECIDO_BVH_AVX512
-// fp-contract off: AVX-512F has fused multiply-add, which the compiler would otherwise form in
-// the kinetic test (GCC's C++ default is -ffp-contract=fast, clang's "on"), giving other
-// roundings than the SSE2 path. The build passes -ffp-contract=off (CMakeLists.txt); GCC also
-// gets it here, in the function's own attributes (clang has no "optimize" attribute).
-#if defined(__clang__)
+// AVX-512F has fused multiply-add, which the compiler would otherwise form in the kinetic test
+// (GCC's C++ default is -ffp-contract=fast, clang's "on"), giving other roundings than the SSE2
+// path: the build compiles with -ffp-contract=off (CMakeLists.txt), for every compiler.
 #define TECIDO_BVH_TARGET_AVX512 __attribute__((target("avx512f")))
-#else
-#define TECIDO_BVH_TARGET_AVX512 __attribute__((target("avx512f"), optimize("fp-contract=off")))
-#endif
 // The 16 lanes of a 4 x 4 mask: lane 4k + l pairs lane k of node a with lane l of node b. a's
 // row of four is repeated (k = lane / 4), b's row is tiled (l = lane % 4). (The maskz_ forms
 // with a full mask: GCC 12's plain broadcast/permutexvar trip -Wuninitialized.)

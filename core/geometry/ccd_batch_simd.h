@@ -24,13 +24,12 @@
 #if defined(__GNUC__) && defined(__x86_64__)
 #define TECIDO_BATCH_X86 1
 #include <immintrin.h>
-#if defined(__clang__)
 #define TECIDO_BATCH_PRAGMA(x) _Pragma(#x)
+#if defined(__clang__)
 #define TECIDO_BATCH_BEGIN_TARGET(isa) \
   TECIDO_BATCH_PRAGMA(clang attribute push(__attribute__((target(isa))), apply_to = function))
 #define TECIDO_BATCH_END_TARGET _Pragma("clang attribute pop")
 #else
-#define TECIDO_BATCH_PRAGMA(x) _Pragma(#x)
 #define TECIDO_BATCH_BEGIN_TARGET(isa) _Pragma("GCC push_options") TECIDO_BATCH_PRAGMA(GCC target(isa))
 #define TECIDO_BATCH_END_TARGET _Pragma("GCC pop_options")
 #endif
