@@ -25,6 +25,8 @@ if [ ! -f "$BUILD/CMakeCache.txt" ] && command -v ninja >/dev/null; then GEN=(-G
 CC=clang CXX=clang++ cmake -S . -B "$BUILD" "${GEN[@]}" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O2 -g1 -DNDEBUG" \
   -DTECIDO_FUZZ=ON -DTECIDO_BENCH=OFF -DBUILD_TESTING=OFF >/dev/null
 cmake --build "$BUILD" --target fuzz -j "$JOBS"
+# TECIDO_FUZZ_BUILD_ONLY=1: build and stop (scripts/test.sh times the build and the runs apart).
+if [ "${TECIDO_FUZZ_BUILD_ONLY:-0}" = "1" ]; then exit 0; fi
 if [ $# -gt 0 ]; then TARGETS=("$@"); else mapfile -t TARGETS < "$BUILD/fuzz_targets.txt"; fi
 
 MAX_LEN=${MAX_LEN:-262144} TIMEOUT=${TIMEOUT:-5} RSS_MB=${RSS_MB:-1024}

@@ -35,6 +35,9 @@ inline void write_text(const std::filesystem::path& p, const std::string& text) 
   out << text;
 }
 
+/// `s` in single quotes for the shell (for paths and commands without a single quote of their own).
+inline std::string quoted(const std::string& s) { return "'" + s + "'"; }
+
 /// `args` is appended to the CLI path verbatim (quote it yourself).
 inline CliResult run_cli(const std::string& args) {
   static int counter = 0;

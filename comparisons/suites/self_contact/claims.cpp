@@ -1,4 +1,5 @@
 #include "comparisons/suites/self_contact/claims.h"
+#include "comparisons/suites/self_contact/statistics.h"
 
 #include <fmt/format.h>
 
@@ -9,7 +10,6 @@ namespace tecido::suites::self_contact {
 
 namespace {
 
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 bool defined(const Interval& ci) { return !std::isnan(ci.lo) && !std::isnan(ci.hi); }
 

@@ -1,4 +1,5 @@
 #include "comparisons/suites/self_contact/ensemble.h"
+#include "comparisons/suites/self_contact/statistics.h"
 
 #include <cmath>
 #include <limits>
@@ -7,7 +8,6 @@ namespace tecido::suites::self_contact {
 
 namespace {
 
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 std::vector<double> finite(const std::vector<double>& xs) {
   std::vector<double> out;

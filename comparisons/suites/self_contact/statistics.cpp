@@ -6,7 +6,6 @@
 namespace tecido::suites::self_contact {
 
 namespace {
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 const Interval kNoInterval{kNaN, kNaN};
 }  // namespace
 

@@ -3,9 +3,13 @@
 /// intervals, Welch's difference of two means, the sign test, and a correlation. Plain formulas
 /// from the textbooks named beside each; no third-party library.
 #include <cstddef>
+#include <limits>
 #include <vector>
 
 namespace tecido::suites::self_contact {
+
+/// A value that is not there (no runs, no seed value, no interval): NaN.
+inline constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 /// An interval [lo, hi]; NaN ends when it cannot be computed.
 struct Interval {

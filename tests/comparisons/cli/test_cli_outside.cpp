@@ -16,6 +16,7 @@ namespace tecido {
 namespace {
 
 using nlohmann::json;
+using testing::quoted;
 using testing::run_cli;
 
 std::string hand_pairs_file(const std::filesystem::path& dir) {
@@ -25,8 +26,6 @@ std::string hand_pairs_file(const std::filesystem::path& dir) {
   testing::write_text(path, io::tri_pairs_to_json(pairs).dump());
   return path;
 }
-
-std::string quoted(const std::string& s) { return "'" + s + "'"; }
 
 /// The fitted orders of `engine` in report.json's order data, per problem.
 std::vector<double> fitted_orders(const json& report, const std::string& engine) {

@@ -15,9 +15,8 @@ namespace tecido {
 namespace {
 
 using nlohmann::json;
+using testing::quoted;
 using testing::run_cli;
-
-std::string quoted(const std::string& s) { return "'" + s + "'"; }
 
 CcdQuery query(CcdKind kind, std::array<Vec3, 4> x0, std::array<Vec3, 4> x1) {
   CcdQuery q;

@@ -18,9 +18,8 @@ namespace tecido {
 namespace {
 
 using nlohmann::json;
+using testing::quoted;
 using testing::run_cli;
-
-std::string quoted(const std::string& s) { return "'" + s + "'"; }
 
 struct SuiteRun {
   int code;

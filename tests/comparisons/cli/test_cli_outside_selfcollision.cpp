@@ -16,9 +16,8 @@ namespace tecido {
 namespace {
 
 using nlohmann::json;
+using testing::quoted;
 using testing::run_cli;
-
-std::string quoted(const std::string& s) { return "'" + s + "'"; }
 
 TEST(CliOutsideSelfCollision, OutsideTriangleTestsAreScoredAgainstTheTruth) {
   const auto dir = testing::temp_dir("outside-selfcollision");

@@ -14,14 +14,14 @@
 namespace tecido {
 namespace {
 
-struct Mesh {
+struct SheetMesh {
   std::vector<Vec3> x;
   std::vector<std::array<int, 3>> tris;
 };
 
 // Appends a rows x cols sheet with the cloth builder's numbering and triangulation
 // (node first + r*cols + c; quad (r,c) -> (a,b,d), (a,d,e)); pos(r, c) places the nodes.
-int add_sheet(Mesh& m, int rows, int cols, const std::function<Vec3(int, int)>& pos) {
+int add_sheet(SheetMesh& m, int rows, int cols, const std::function<Vec3(int, int)>& pos) {
   const int first = static_cast<int>(m.x.size());
   for (int r = 0; r < rows; ++r)
     for (int c = 0; c < cols; ++c) m.x.push_back(pos(r, c));
@@ -63,7 +63,7 @@ std::vector<std::vector<int>> region_vertices(const GiaResult& g) {
 // edges at its apex; the regions are {12} (A's side inside the tent) and {29} (the apex, above
 // A); 12 is pulled toward the apex and the apex toward 12.
 TEST(Gia, TentThroughSheetGivesHandWorkedRegions) {
-  Mesh m;
+  SheetMesh m;
   add_sheet(m, 5, 5, [](int r, int c) { return Vec3(c, r, 0); });
   add_sheet(m, 3, 3, [](int r, int c) { return Vec3(1.1 + c, 1.2 + r, -0.5); });
   m.x[29] = Vec3(2.1, 2.2, 0.6);
@@ -100,7 +100,7 @@ TEST(Gia, TentThroughSheetGivesHandWorkedRegions) {
 // so no cut edge separates anything: each sheet stays one component (the flood from either
 // side covers the whole sheet), no region is found, every pair is unresolved.
 TEST(Gia, IntersectionReachingTheBorderIsDetectedAsFailure) {
-  Mesh m;
+  SheetMesh m;
   add_sheet(m, 3, 4, [](int r, int c) { return Vec3(0.05, c, 0.45 - r); });
   add_sheet(m, 4, 4, [](int r, int c) { return Vec3(-1.5 + c, 1.6 + r, -0.05); });
   const MeshTopology topo = build_mesh_topology(static_cast<int>(m.x.size()), m.tris);
@@ -125,7 +125,7 @@ TEST(Gia, IntersectionReachingTheBorderIsDetectedAsFailure) {
 // A's triangles (3,4,7) and (4,8,7); both resolve through node 11, pulled toward the centroid
 // of those two triangles' vertices, (2, 3, 0): direction (-0.2, 0.7, -0.5)/|.|.
 TEST(Gia, CornerThroughSheetIsResolvedFromTheCornerSide) {
-  Mesh m;
+  SheetMesh m;
   add_sheet(m, 3, 3, [](int r, int c) { return Vec3(2.0 * c, 2.0 * r, 0); });
   add_sheet(m, 2, 2, [](int r, int c) { return Vec3(1.7 + 0.6 * c, 1.8 + 0.5 * r, -0.4 - 0.1 * c); });
   m.x[11] = Vec3(2.2, 2.3, 0.5);  // B node (1, 0)

@@ -16,8 +16,8 @@
 namespace tecido {
 namespace {
 
-constexpr double kG = 9.81;
-constexpr IntegratorKind kAll[] = {IntegratorKind::Euler, IntegratorKind::Symplectic, IntegratorKind::Midpoint,
+constexpr double kGravity = 9.81;
+constexpr IntegratorKind kAllIntegrators[] = {IntegratorKind::Euler, IntegratorKind::Symplectic, IntegratorKind::Midpoint,
                                    IntegratorKind::RK4};
 
 Obstacle sphere(const Vec3& c, double r) {
@@ -40,7 +40,7 @@ Scene one_particle(const Vec3& x, const Vec3& v, double k, IntegratorKind integ,
   Scene s;
   s.integrator = integ;
   s.dt = dt;
-  if (gravity) s.forces.gravity = Vec3(0, 0, -kG);
+  if (gravity) s.forces.gravity = Vec3(0, 0, -kGravity);
   s.particles.add(x, v, 1.0, k, false);
   return s;
 }
@@ -60,8 +60,8 @@ TEST(ObstacleContacts, DropOnASphereHitsAtTheRootAndReboundsWithK) {
     const ContactEvent& e = sim.contact_log().front();
     EXPECT_EQ(e.obstacle, 0);
     EXPECT_EQ(e.plane, -1);
-    EXPECT_NEAR(e.time, std::sqrt(2 * d / kG), tol + 1e-12);
-    EXPECT_NEAR(e.velocity_before.z(), -std::sqrt(2 * kG * d), 1e-6);
+    EXPECT_NEAR(e.time, std::sqrt(2 * d / kGravity), tol + 1e-12);
+    EXPECT_NEAR(e.velocity_before.z(), -std::sqrt(2 * kGravity * d), 1e-6);
     EXPECT_EQ(e.velocity_after.z(), -k * e.velocity_before.z());
     EXPECT_EQ(e.kind, ContactKind::Elastic);
   }
@@ -143,7 +143,7 @@ TEST(ObstacleContacts, ThinBoxIsNeverTunnelledAtStepsUpTo10s) {
   // 1 km/s at a 2 mm box under gravity, every integrator, steps from 1 ms to 10 s: every step ends
   // on or above the top face.
   const Vec3 h(1, 1, 1e-3);
-  for (IntegratorKind integ : kAll) {
+  for (IntegratorKind integ : kAllIntegrators) {
     for (double dt : {1e-3, 0.1, 1.0, 10.0}) {
       Scene s = one_particle(Vec3(0.3, -0.2, 5), Vec3(0, 0, -1000), 0.5, integ, dt, true);
       s.obstacles.push_back(box(Vec3::Zero(), h));
@@ -210,7 +210,7 @@ TEST(ObstacleContacts, OffCentreSphereStillOrMovingIsNeverEndedInsideAtStepsUpTo
   // 1 km/s under gravity, every integrator, steps from 1 ms to 10 s: no step ends inside.
   const Vec3 c(0.3, 0.7, -0.1);
   for (const Vec3& vel : {Vec3(0, 0, 0), Vec3(0.7, -0.3, 0.9)}) {
-    for (IntegratorKind integ : kAll) {
+    for (IntegratorKind integ : kAllIntegrators) {
       for (double dt : {1e-3, 0.1, 1.0, 10.0}) {
         Scene s = one_particle(c + Vec3(0.01, 0.02, 3), Vec3(0, 0, -1000), 0.3, integ, dt, true);
         Obstacle o = sphere(c, 0.3);
@@ -273,7 +273,7 @@ TEST(ObstacleContacts, SpringGridOnAnOffCentreSphereNeverEndsAStepInside) {
   const Vec3 c(0.3, 0.7, -0.1);
   Scene s;
   s.dt = 0.002;
-  s.forces.gravity = Vec3(0, 0, -kG);
+  s.forces.gravity = Vec3(0, 0, -kGravity);
   s.forces.air_drag = 0.001;
   const int n = 7;
   const double d = 0.6 / (n - 1);
