@@ -33,8 +33,10 @@ const std::string& folder() {
   return dir;
 }
 
-/// Writes the OBJ parts; returns the JSON part.
+/// Writes the OBJ parts (removing those of the previous input, so that every input is read alone);
+/// returns the JSON part.
 std::string split_and_write(const std::string& text) {
+  for (int k = 0; k < 8; ++k) std::filesystem::remove(folder() + "/" + std::to_string(k) + ".obj");
   const std::string sep = "%%%\n";
   std::size_t at = text.find(sep);
   const std::string json = text.substr(0, at);
