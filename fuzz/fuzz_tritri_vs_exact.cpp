@@ -5,24 +5,18 @@
 //
 // Input layout (so that degenerate, touching and coplanar pairs are common, not measure zero):
 //   byte 0: structure flags, applied after the 18 coordinates are decoded (see apply_flags)
-//   then 18 coordinates a0.x a0.y a0.z a1.x ... b2.z, each a mode byte m then a payload by m % 8:
-//     0  raw double, 8 bytes little-endian
-//     1  small integer -4..4, 1 byte
-//     2  dyadic n / 2^k, n in -128..127, k in 0..10, 2 bytes
-//     3  a copy of an earlier coordinate, 1 byte (index mod count so far)
-//     4  an earlier coordinate moved by -4..3 ulps, 2 bytes
-//     5  n * 2^e, n in -128..127, e in -1100..1031 (subnormals to near overflow), 3 bytes
-//     6  small integer plus a tiny dyadic offset n * 2^-(10..69), 3 bytes
-//     7  +0 or -0, 1 byte
+//   then 18 coordinates a0.x a0.y a0.z a1.x ... b2.z, each as fuzz_coordinates.h reads them
+//   (raw doubles, small integers, dyadics, copies, ulp nudges, extreme exponents, signed zeros)
 //   then up to 3 bytes of parameters for the flags. Missing bytes read as 0.
 // Non-finite inputs (a payload may decode to NaN or Inf) are skipped: the contract is for finite ones.
+#include "fuzz_coordinates.h"
+
 #include "core/geometry/tri_tri_intersect.h"
 #include "reference/exact_referee.h"
 
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
-#include <cstring>
 #include <exception>
 
 namespace {
@@ -30,58 +24,7 @@ namespace {
 using tecido::Triangle;
 using tecido::Vec3;
 
-class Bytes {
- public:
-  Bytes(const std::uint8_t* d, std::size_t n) : d_(d), n_(n) {}
-  std::uint8_t u8() { return i_ < n_ ? d_[i_++] : 0; }
-  std::int8_t s8() { return static_cast<std::int8_t>(u8()); }
-  std::uint16_t u16() { return static_cast<std::uint16_t>(u8() | (u8() << 8)); }
-  double raw() {
-    std::uint64_t bits = 0;
-    for (int k = 0; k < 8; ++k) bits |= static_cast<std::uint64_t>(u8()) << (8 * k);
-    double x;
-    std::memcpy(&x, &bits, sizeof x);
-    return x;
-  }
-
- private:
-  const std::uint8_t* d_;
-  std::size_t n_, i_ = 0;
-};
-
-double decode(Bytes& in, const double* earlier, int count) {
-  const std::uint8_t mode = in.u8();
-  switch (mode % 8) {
-    case 0: return in.raw();
-    case 1: return static_cast<double>(in.u8() % 9) - 4.0;
-    case 2: {
-      const int n = in.s8();
-      return std::ldexp(static_cast<double>(n), -(in.u8() % 11));
-    }
-    case 3: {
-      const std::uint8_t k = in.u8();
-      return count > 0 ? earlier[k % count] : 0.0;
-    }
-    case 4: {
-      const std::uint8_t k = in.u8();
-      const int steps = in.s8() / 32;  // -4..3
-      double x = count > 0 ? earlier[k % count] : 0.0;
-      for (int s = 0; s < (steps < 0 ? -steps : steps); ++s) x = std::nextafter(x, steps < 0 ? -INFINITY : INFINITY);
-      return x;
-    }
-    case 5: {
-      const int n = in.s8();
-      const int e = static_cast<int>(in.u16() % 2132) - 1100;
-      return std::ldexp(static_cast<double>(n), e);
-    }
-    case 6: {
-      const double base = static_cast<double>(in.u8() % 9) - 4.0;
-      const int n = in.s8();
-      return base + std::ldexp(static_cast<double>(n), -(10 + in.u8() % 60));
-    }
-    default: return (in.u8() & 1) ? -0.0 : 0.0;
-  }
-}
+using tecido::fuzz::Bytes;
 
 /// Structure flags: bit 0 b0 = a0 (shared vertex); bit 1 b1 = a1 (with bit 0: shared edge);
 /// bit 2 every z = a0.z (coplanar, axis-aligned plane); bit 3 b2 = a0 + s(a1-a0) + t(a2-a0)
@@ -129,7 +72,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   Bytes in(data, size);
   const std::uint8_t flags = in.u8();
   double c[18];
-  for (int k = 0; k < 18; ++k) c[k] = decode(in, c, k);
+  tecido::fuzz::decode_coordinates(in, c, 18);
   Triangle a, b;
   for (int k = 0; k < 3; ++k) {
     a[k] = Vec3(c[3 * k], c[3 * k + 1], c[3 * k + 2]);

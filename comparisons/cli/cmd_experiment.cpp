@@ -143,6 +143,7 @@ int run(const Opts& o) {
   const sc::Options opt = to_options(o);
   check_experiment_work(opt, o.max_work);
   io::check_output_dir(o.out);
+  const io::OutputDirLock out_lock(o.out);  // a second run into this --out refuses
   const auto plan = std::make_shared<const sc::Plan>(sc::make_plan(opt));
   const suites::Sweep sweep = sc::make_sweep(plan);
   const auto indices = suites::shard_indices(sweep.cases, opt.shard_index, opt.shard_count);

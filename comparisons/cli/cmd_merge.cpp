@@ -125,6 +125,7 @@ Command add_merge(CLI::App& app) {
     }
     if (suite_kind && !o->seed_table.empty()) throw io::UsageError("--seed-table: applies to experiment shards only");
     io::check_output_dir(o->out);
+    const io::OutputDirLock out_lock(o->out);  // a second run into this --out refuses
     if (suite_kind) {
       return merge_suites(files, o->out);
     }

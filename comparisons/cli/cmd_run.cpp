@@ -26,6 +26,7 @@
 #include <algorithm>
 #include <iostream>
 #include <memory>
+#include <optional>
 
 namespace tecido::cli {
 
@@ -138,7 +139,11 @@ void print_summary(const Simulation& sim, const Scene& scene, const io::Json& re
 int run(const RunOptions& o) {
   const Scene scene = prepared_scene(o);
   const long long every = o.out.empty() ? 1 : frame_interval(o, scene);
-  if (!o.out.empty()) io::check_output_dir(o.out + "/frames");
+  std::optional<io::OutputDirLock> out_lock;  // a second run into this --out refuses
+  if (!o.out.empty()) {
+    io::check_output_dir(o.out + "/frames");
+    out_lock.emplace(o.out);
+  }
   Simulation sim(scene);
   const auto self_collision = install_self_collision(sim);
   std::string plot_note;

@@ -141,6 +141,7 @@ int run_suite_command(const SuiteOptions& o) {
   ctx.gnuplot = io::gnuplot_available();
   ctx.progress = true;
   io::check_output_dir(ctx.out_dir);
+  const io::OutputDirLock out_lock(ctx.out_dir);  // a second run into this --out refuses
   if (sharded && o.outside.any())
     throw io::UsageError("--shard: outside engines (--plugin, --engine-cmd) run unsharded only");
   const auto outside = load_outside_engines(o.outside);

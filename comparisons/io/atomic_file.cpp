@@ -44,14 +44,34 @@ int create_temp_beside(const std::string& target, std::string& name) {
   }
 }
 
-/// Writes every byte to fd and closes it; OutputError naming `path` if a write or the close
-/// fails (a full disk may show only at the close).
-void write_and_close(int fd, const std::string& path, const std::string& content) {
-  const bool written = write_all(fd, content);
-  const int write_errno = errno;
+/// Writes every byte to fd, flushes it to the disk when `sync` (fsync), and closes it;
+/// OutputError naming `path` if a write, the flush or the close fails (a full disk may show
+/// only at the flush or the close).
+void write_and_close(int fd, const std::string& path, const std::string& content, bool sync) {
+  const char* what = "cannot write";
+  bool ok = write_all(fd, content);
+  if (ok && sync && ::fsync(fd) != 0) {
+    ok = false;
+    what = "cannot flush to the disk (fsync)";
+  }
+  const int first_errno = errno;
   const bool closed = ::close(fd) == 0;
-  if (!written) errno = write_errno;
-  if (!written || !closed) throw OutputError(path, errno_text("cannot write"));
+  if (!ok) errno = first_errno;
+  if (!ok || !closed) throw OutputError(path, errno_text(what));
+}
+
+/// Flushes the directory holding `path` (its entries: the rename), so that the new name survives
+/// a crash. File systems that cannot sync a directory (EINVAL) are left as they are.
+void sync_parent_directory(const std::string& path) {
+  const std::filesystem::path parent = std::filesystem::path(path).parent_path();
+  const std::string dir = parent.empty() ? "." : parent.string();
+  const int fd = ::open(dir.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+  if (fd < 0) throw OutputError(path, errno_text("cannot open its directory to sync it"));
+  const bool ok = ::fsync(fd) == 0 || errno == EINVAL;
+  const int sync_errno = errno;
+  ::close(fd);
+  errno = sync_errno;
+  if (!ok) throw OutputError(path, errno_text("cannot sync its directory"));
 }
 
 }  // namespace
@@ -59,7 +79,7 @@ void write_and_close(int fd, const std::string& path, const std::string& content
 void write_whole_file(const std::string& path, const std::string& content) {
   const int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
   if (fd < 0) throw OutputError(path, errno_text("cannot open for writing"));
-  write_and_close(fd, path, content);
+  write_and_close(fd, path, content, false);
 }
 
 void write_file_atomic(const std::string& path, const std::string& content) {
@@ -69,7 +89,7 @@ void write_file_atomic(const std::string& path, const std::string& content) {
   const int fd = create_temp_beside(path, tmp);
   if (fd < 0) throw OutputError(path, errno_text("cannot create a file"));
   try {
-    write_and_close(fd, path, content);
+    write_and_close(fd, path, content, true);
   } catch (...) {
     ::unlink(tmp.c_str());
     throw;
@@ -79,6 +99,7 @@ void write_file_atomic(const std::string& path, const std::string& content) {
     ::unlink(tmp.c_str());
     throw OutputError(path, problem);
   }
+  sync_parent_directory(path);
 }
 
 }  // namespace tecido::io

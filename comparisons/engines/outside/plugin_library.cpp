@@ -12,8 +12,9 @@ namespace {
 
 std::string door_of(const std::string& path) { return "plug-in " + path; }
 
-/// Checks the engine table; throws EngineError naming the first problem.
-void check_table(const std::string& path, const tecido_plugin& t) {
+}  // namespace
+
+void check_plugin_table(const std::string& path, const tecido_plugin& t) {
   const std::string door = door_of(path);
   if (t.engine_count == 0 || t.engines == nullptr) throw EngineError(door, TECIDO_PLUGIN_ENTRY_SYMBOL, "names no engine");
   if (t.engine_count > 1000) throw EngineError(door, TECIDO_PLUGIN_ENTRY_SYMBOL, "engine_count is absurd (over 1000)");
@@ -34,8 +35,6 @@ void check_table(const std::string& path, const tecido_plugin& t) {
       throw EngineError(door, where, "engine \"" + name + "\" answers nothing (every function pointer is NULL)");
   }
 }
-
-}  // namespace
 
 bool valid_engine_name(const std::string& name) {
   if (name.empty() || name.size() > 64 || name[0] == '-') return false;
@@ -78,7 +77,7 @@ std::shared_ptr<PluginLibrary> PluginLibrary::load(const std::string& path) {
                           std::to_string(TECIDO_PLUGIN_ABI_VERSION) + " (rebuild it against this include/tecido/plugin.h)");
   }
   try {
-    check_table(path, *table);
+    check_plugin_table(path, *table);
   } catch (...) {
     dlclose(handle);
     throw;

@@ -33,6 +33,13 @@ class PluginLibrary {
   const tecido_plugin* table_ = nullptr;
 };
 
+/// The checks load() makes on a plug-in's engine table once its ABI version matches: at least
+/// one engine and at most 1000, valid and distinct names, a dynamics engine with all four of
+/// create/step/read/destroy, claimed_order in [0, 100], some function per engine. Throws
+/// EngineError naming `path` and the first problem. (Separate so that fuzz_plugin_table can
+/// check it without a shared library.)
+void check_plugin_table(const std::string& path, const tecido_plugin& table);
+
 /// Whether `name` is a valid engine name: 1 to 64 of [A-Za-z0-9_.-], not starting with '-'.
 bool valid_engine_name(const std::string& name);
 
