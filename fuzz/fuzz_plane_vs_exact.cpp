@@ -4,10 +4,9 @@
 // a different hit from the referee's is a finding, so is a disagreement between core's filtered
 // path and its unfiltered exact path (detail::segment_plane_exact), and a hit whose t lies
 // outside [0, 1]. The stored plane is used as given: normal and forward need not be unit or
-// orthogonal. A negative half extent (which the readers reject) is an empty rectangle for core,
-// which must say miss; the referee is not asked there: it does not define that case, and its
-// clip() takes [-h, h] with h < 0 as the non-empty [h, -h] (regress_negative_half_extent, found
-// by this target: the referee says hit where core, as documented, says miss).
+// orthogonal. A negative half extent (which the readers reject) is an empty rectangle for core and
+// for the referee alike: both must say miss (regress_negative_half_extent: this target found the
+// referee's clip() taking [-h, h] with h < 0 as the non-empty [h, -h]; fixed in exact_referee.cpp).
 //
 // Input layout: byte 0 structure flags (see apply_flags), then 17 coordinates as
 // fuzz_coordinates.h reads them: position xyz, normal xyz, forward xyz, half extents x y,
@@ -105,10 +104,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   if (tecido::fuzz::exponent_spread(all, 17) > kMaxExponentSpread) return 0;
 
   const tecido::SegmentPlaneHit core = tecido::segment_plane(pl, p1, p2);
-  if (pl.half_extents.x() < 0.0 || pl.half_extents.y() < 0.0) {
-    if (core.hit) report("core hits a rectangle with a negative half extent (documented: no hit)", pl, p1, p2);
-    return 0;
-  }
+  if ((pl.half_extents.x() < 0.0 || pl.half_extents.y() < 0.0) && core.hit)
+    report("core hits a rectangle with a negative half extent (documented: no hit)", pl, p1, p2);
   const tecido::SegmentPlaneHit unfiltered = tecido::detail::segment_plane_exact(pl, p1, p2);
   tecido::reference::ExactSegmentPlane ex;
   try {

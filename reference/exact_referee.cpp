@@ -106,6 +106,9 @@ ExactSegmentPlane exact_segment_plane(const BoundedPlane& plane, const Vec3& p1,
       !finite(p2) || !std::isfinite(plane.half_extents.x()) || !std::isfinite(plane.half_extents.y()))
     throw std::domain_error("exact_segment_plane: non-finite input");
 
+  // A negative half extent leaves no point with |a| <= hx (or |b| <= hy): the rectangle is empty.
+  if (plane.half_extents.x() < 0.0 || plane.half_extents.y() < 0.0) return {};
+
   const QVec P = qvec(plane.position), N = qvec(plane.normal), F = qvec(plane.forward);
   const QVec R = cross(N, F);
   const Q hx(plane.half_extents.x()), hy(plane.half_extents.y());

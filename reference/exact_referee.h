@@ -47,7 +47,8 @@ struct ExactSegmentPlane {
 ///     lower end (t = 0 when p1 is inside), miss when it is empty.
 ///   - otherwise (a strict sign change, or exactly one end on the plane): the single point on
 ///     the plane is at t = s1 / (s1 - s2) (rational); hit iff it is in the rectangle.
-/// A degenerate segment off the plane is a miss. Method: plain rational arithmetic with
+/// A degenerate segment off the plane is a miss; so is every segment when a half extent is
+/// negative (the rectangle is empty). Method: plain rational arithmetic with
 /// CGAL::Gmpq (GMP mpq). Throws std::domain_error if an input is NaN or infinite.
 ExactSegmentPlane exact_segment_plane(const BoundedPlane& plane, const Vec3& p1, const Vec3& p2);
 

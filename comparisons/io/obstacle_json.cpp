@@ -8,6 +8,7 @@
 #include "core/geometry/segment_sphere.h"
 
 #include <filesystem>
+#include <sstream>
 
 namespace tecido::io {
 
@@ -35,6 +36,14 @@ ObjMesh read_obj(const JsonReader& r, const Json& j, const std::string& where, c
   if (mesh.vertices.size() > kMaxMeshVertices || mesh.triangles.size() > kMaxMeshTriangles)
     r.fail(where, "the mesh exceeds the limits of " + std::to_string(kMaxMeshVertices) + " vertices and " +
                       std::to_string(kMaxMeshTriangles) + " triangles");
+  // The scene's coordinate limit holds for a mesh's vertices as for every other position (and keeps
+  // the centroid's sum finite).
+  for (std::size_t v = 0; v < mesh.vertices.size(); ++v)
+    if (!(mesh.vertices[v].cwiseAbs().maxCoeff() <= kMaxCoordinate)) {
+      std::ostringstream s;
+      s << "coordinate " << mesh.vertices[v].cwiseAbs().maxCoeff() << " is out of range (|x| <= " << kMaxCoordinate << ")";
+      throw InputError(p.string(), "vertex " + std::to_string(v + 1), s.str());
+    }
   for (std::size_t f = 0; f < mesh.triangles.size(); ++f) {
     const auto& t = mesh.triangles[f];
     const Vec3 &a = mesh.vertices[t[0]], &b = mesh.vertices[t[1]], &c = mesh.vertices[t[2]];

@@ -111,6 +111,20 @@ TEST(ExactSegmentPlane, CrossingsInsideAndOnTheBorder) {
   EXPECT_FALSE(exact_segment_plane(p, {0, -0.5 - tiny, 1}, {0, -0.5 - tiny, -1}).hit);
 }
 
+// A negative half extent is an empty rectangle: no segment meets it, not even one through the centre
+// (fuzz_plane_vs_exact's regress_negative_half_extent: [-h, h] with h < 0 was taken as [h, -h]).
+TEST(ExactSegmentPlane, NegativeHalfExtentIsAnEmptyRectangle) {
+  BoundedPlane p = unit_plane();
+  p.half_extents.x() = -1;
+  EXPECT_FALSE(exact_segment_plane(p, {0, 0, 1}, {0, 0, -1}).hit);
+  EXPECT_FALSE(exact_segment_plane(p, {-2, 0, 0}, {2, 0, 0}).hit);  // in the plane, across it
+  p = unit_plane();
+  p.half_extents.y() = -0.5;
+  EXPECT_FALSE(exact_segment_plane(p, {0.5, 0, 1}, {0.5, 0, -1}).hit);
+  p.half_extents.y() = 0.0;  // a segment of zero width: still met on the line b = 0
+  expect_hit(exact_segment_plane(p, {0.5, 0, 1}, {0.5, 0, -1}), 0.5);
+}
+
 TEST(ExactSegmentPlane, RationalFractionIsRoundedToNearest) {
   const ExactSegmentPlane r = exact_segment_plane(unit_plane(), {0, 0, 1}, {0, 0, -2});
   EXPECT_TRUE(r.hit);

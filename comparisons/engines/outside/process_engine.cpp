@@ -74,9 +74,12 @@ Json ProcessEngine::request(const Json& req, const std::string& op, bool error_o
   Json reply;
   try {
     reply = Json::parse(line);
-  } catch (const Json::parse_error&) {
+  } catch (const Json::exception& e) {
+    // parse_error: not JSON; out_of_range (406): a number past the range of doubles, e.g. 1e400.
     const std::string shown = line.size() > 120 ? line.substr(0, 120) + "..." : line;
-    fail(op, "malformed JSON reply: \"" + shown + "\"");
+    const bool overflow = dynamic_cast<const Json::out_of_range*>(&e) != nullptr;
+    fail(op, std::string(overflow ? "a number in the reply is out of the range of doubles: \"" : "malformed JSON reply: \"") +
+                 shown + "\"");
   }
   if (!reply.is_object()) fail(op, "the reply is not a JSON object: " + line.substr(0, 120));
   if (!error_ok)

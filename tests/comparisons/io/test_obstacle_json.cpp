@@ -122,6 +122,21 @@ TEST_F(ObstacleJson, DegenerateFaceNamesItsLine) {
   expect_rejected(scene_with(R"([{"mesh":{"obj":"repeat.obj"}}])"), "repeat.obj", "line 5", "degenerate face");
 }
 
+// A mesh's vertices are positions like any other: beyond the scene's coordinate limit (1e12 m) the
+// file is rejected at the vertex (fuzz_obstacles' regress_mesh_beyond_coordinate_limit: 3e16 m was
+// accepted, and coordinates near 1e308 summed to an infinite centre).
+TEST_F(ObstacleJson, MeshVerticesMeetTheCoordinateLimit) {
+  testing::write_text(dir_ / "far.obj", "v 0 0 0\nv 1 0 0\nv 0 3e16 0\nf 1 2 3\n");
+  expect_rejected(scene_with(R"([{"mesh":{"obj":"far.obj"}}])"), "far.obj", "vertex 3", "out of range (|x| <= 1e+12)");
+  testing::write_text(dir_ / "huge.obj", "v 1e308 0 0\nv 1.7e308 0 0\nv 1e308 1 0\nf 1 2 3\n");
+  expect_rejected(scene_with(R"([{"mesh":{"obj":"huge.obj"}}])"), "huge.obj", "vertex 1", "out of range");
+  // At the limit itself: accepted, its centre the vertices' mean.
+  testing::write_text(dir_ / "edge.obj", "v 0 0 0\nv 1e12 0 0\nv 0 -1e12 0\nf 1 2 3\n");
+  const Scene s = io::load_scene(write_scene("edge.json", scene_with(R"([{"mesh":{"obj":"edge.obj"}}])")));
+  ASSERT_EQ(s.obstacles.size(), 1u);
+  EXPECT_EQ(s.obstacles[0].center, Vec3(1e12 / 3, -1e12 / 3, 0));
+}
+
 TEST_F(ObstacleJson, FramesNeedOneVertexCountAndIncreasingTimes) {
   expect_rejected(scene_with(R"([{"mesh":{"obj":"tri.obj"},"frames":[{"time":0,"obj":"tri.obj"},)"
                              R"({"time":1,"obj":"quad.obj"}]}])"),

@@ -162,6 +162,14 @@ TEST(ProcessEngine, GarbageIsMalformedJson) {
   EXPECT_NE(e.find("op step: malformed JSON reply: \"this is not json\""), std::string::npos) << e;
 }
 
+// A number past the range of doubles is valid JSON that nlohmann/json refuses with out_of_range
+// (406), not parse_error: still the door's one EngineError (fuzz_engine_replies' regress_toi_overflow).
+TEST(ProcessEngine, NumberPastTheDoubleRangeIsAnEngineError) {
+  const std::string e = step_error("overflow-at-step");
+  EXPECT_NE(e.find("op step: a number in the reply is out of the range of doubles: \"{\"x\": [[1e400"), std::string::npos)
+      << e;
+}
+
 TEST(ProcessEngine, WrongStateSizeIsAProtocolError) {
   const std::string e = step_error("short-step");
   EXPECT_NE(e.find("op step: \"x\" must be an array of 1 points"), std::string::npos) << e;
