@@ -10,8 +10,9 @@
 // CSV queries add "rounded": whether some rational coordinate is not a double; the exact engine
 // answers on the rationals, the others on the nearest doubles, and their errors on rounded queries
 // are counted apart (they answered a slightly different query). Formats: comparisons/io/ccd_queries.h.
-#include "comparisons/cli/commands.h"
-#include "comparisons/cli/outside_options.h"
+// The options (input, --engines, --json, outside engines) are the query-command scaffold's
+// (query_command.h).
+#include "comparisons/cli/query_command.h"
 #include "comparisons/engines/run_engines.h"
 #include "comparisons/engines/ccd_engines.h"
 #include "comparisons/io/ccd_queries.h"
@@ -107,15 +108,9 @@ std::vector<std::optional<CcdAnswer>> answer_all(const Answerer& a, const std::v
   return a.outside->ccd(queries);
 }
 
-int run_ccd(const std::string& path, const std::string& csv_kind, const std::string& engine_list,
-            const outside::OutsideOptions& outside_options) {
-  const auto outside = load_outside_engines(outside_options);
-  const auto known = ccd_engine_names(outside.get());
-  std::string every;
-  for (const auto& k : known) every += (every.empty() ? "" : ",") + k;
-  const auto names = parse_engine_list(engine_list.empty() ? every : engine_list, known, "ccd");
-  const std::vector<Answerer> engines = answerers(names, *outside);
-  std::vector<io::CcdQueryEntry> entries = load(path, csv_kind);
+int run_ccd(const QueryRequest& request, const std::string& csv_kind) {
+  const std::vector<Answerer> engines = answerers(request.engines, *request.outside);
+  std::vector<io::CcdQueryEntry> entries = load(request.input, csv_kind);
   bool all_truth = true;
   std::vector<char> rounded(entries.size());
   for (std::size_t i = 0; i < entries.size(); ++i) {
@@ -144,36 +139,32 @@ int run_ccd(const std::string& path, const std::string& csv_kind, const std::str
 }
 
 Command add_ccd(CLI::App& app) {
-  struct Opts {
-    std::string queries, csv_kind, engines;
-    bool json = false;
-    outside::OutsideOptions outside;
+  auto csv_kind = std::make_shared<std::string>();
+  QueryCommand c;
+  c.name = "ccd";
+  c.summary = "Continuous collision (vertex-face, edge-edge over one time step) per engine, against a truth when given";
+  c.input_option = "--queries";
+  c.input_help =
+      "Queries file: JSON {\"queries\":[{\"id\",\"kind\":\"vertex-face\"|\"edge-edge\",\"t0\":[[x,y,z]x4],"
+      "\"t1\":[[x,y,z]x4]}]} (vertex-face: vertex, then the triangle's corners; edge-edge: a0, a1, b0, b1), "
+      "or the CCD benchmark's CSV with --csv-kind";
+  c.input_non_empty = false;
+  c.options = [csv_kind](CLI::App& sub) {
+    sub.add_option("--csv-kind", *csv_kind,
+                   "Read --queries as the CCD benchmark's CSV of this kind (vertex-face|edge-edge): 8 rows per query "
+                   "(t0 rows, then t1 rows), columns x num, x den, y num, y den, z num, z den, truth (0/1); ids are "
+                   "the 0-based query index");
   };
-  auto o = std::make_shared<Opts>();
-  std::string all;
-  for (const auto& e : ccd_engines()) all += (all.empty() ? "" : ",") + e.name;
-  CLI::App* sub = app.add_subcommand(
-      "ccd", "Continuous collision (vertex-face, edge-edge over one time step) per engine, against a truth when given");
-  sub->add_option("--queries", o->queries,
-                  "Queries file: JSON {\"queries\":[{\"id\",\"kind\":\"vertex-face\"|\"edge-edge\",\"t0\":[[x,y,z]x4],"
-                  "\"t1\":[[x,y,z]x4]}]} (vertex-face: vertex, then the triangle's corners; edge-edge: a0, a1, b0, b1), "
-                  "or the CCD benchmark's CSV with --csv-kind")
-      ->required();
-  sub->add_option("--csv-kind", o->csv_kind,
-                  "Read --queries as the CCD benchmark's CSV of this kind (vertex-face|edge-edge): 8 rows per query "
-                  "(t0 rows, then t1 rows), columns x num, x den, y num, y den, z num, z den, truth (0/1); ids are "
-                  "the 0-based query index");
-  sub->add_option("--engines", o->engines,
-                  "Comma-separated engines (" + all +
-                      "; bullet answers vertex-face only; and outside engines answering ccd by name; default: every one)");
-  sub->add_flag("--json", o->json, "Print JSON (the only output format; kept for the contract)");
-  add_outside_options(sub, o->outside);
-  sub->footer(
+  c.builtin = engine_names_of(ccd_engines());
+  c.engines_note = "; bullet answers vertex-face only; and outside engines answering ccd";
+  c.known = &ccd_engine_names;
+  c.footer =
       "Output: {\"results\":[{\"id\",\"truth\"?,\"rounded\"?,\"<engine>\":{\"hit\":bool,\"toi\":t|null}|null}]}. "
       "With a truth (CSV, or \"truth\" in JSON), stderr gets one line per engine: false positives and negatives; "
       "CSV queries whose rationals are not doubles (\"rounded\": true) are answered by exact on the rationals and "
-      "by the others on the nearest doubles, and counted apart for the others.");
-  return [o]() { return run_ccd(o->queries, o->csv_kind, o->engines, o->outside); };
+      "by the others on the nearest doubles, and counted apart for the others.";
+  c.run = [csv_kind](const QueryRequest& request) { return run_ccd(request, *csv_kind); };
+  return add_query_command(app, std::move(c));
 }
 
 }  // namespace

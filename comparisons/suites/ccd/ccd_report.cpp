@@ -28,15 +28,16 @@ std::string header(const std::string& first, const std::vector<std::string>& eng
 
 /// "fn / fp" (and "(n null)" when the engine could not answer some), "n/a" when it answered none.
 std::string fn_fp_cell(const EngineTally& e) {
-  if (e.no_answer == e.queries) return "n/a";
-  std::string s = fmt::format("{} / {}", e.fn, e.fp);
-  if (e.no_answer) s += fmt::format(" ({} null)", e.no_answer);
+  const agreement::Tally& t = e.tally;
+  if (t.no_answer == t.cases) return "n/a";
+  std::string s = fmt::format("{} / {}", t.misses, t.false_hits);
+  if (t.no_answer) s += fmt::format(" ({} null)", t.no_answer);
   return s;
 }
 
 std::string toi_cell(const EngineTally& e) {
-  if (e.both_hit == 0) return "–";
-  std::string s = fmt::format("{:.2g} / {:.2g}", e.max_toi_error, e.mean_toi_error());
+  if (e.tally.both_hit == 0) return "–";
+  std::string s = fmt::format("{:.2g} / {:.2g}", e.tally.max_t_error, e.mean_toi_error());
   if (e.toi_after) s += fmt::format(" ({} late)", e.toi_after);
   return s;
 }
@@ -56,10 +57,11 @@ std::map<std::string, Totals> totals(const std::vector<FamilyResult>& results, c
     const FamilyResult& r = results[k];
     for (const EngineTally& e : r.engines) {
       Totals& x = t[e.engine];
-      x.queries += e.queries, x.seconds += e.seconds, x.fn += e.fn, x.fp += e.fp;
-      if (e.no_answer == e.queries) continue;
-      x.answered += e.queries - e.no_answer, x.contacts += r.contacts, x.non_contacts += r.queries - r.contacts;
-      if (e.fn) x.fn_families.push_back(fmt::format("{} ({})", r.family, e.fn));
+      const agreement::Tally& c = e.tally;
+      x.queries += c.cases, x.seconds += e.seconds, x.fn += c.misses, x.fp += c.false_hits;
+      if (c.no_answer == c.cases) continue;
+      x.answered += c.cases - c.no_answer, x.contacts += r.contacts, x.non_contacts += r.queries - r.contacts;
+      if (c.misses) x.fn_families.push_back(fmt::format("{} ({})", r.family, c.misses));
     }
   }
   return t;
@@ -134,7 +136,7 @@ std::string kind_tables(CcdKind kind, const std::vector<FamilyResult>& results, 
       }
       fnfp += " " + fn_fp_cell(e) + " |";
       toi += " " + toi_cell(e) + " |";
-      ns += e.no_answer == e.queries ? " n/a |" : fmt::format(" {:.0f} |", e.ns_per_query());
+      ns += e.tally.no_answer == e.tally.cases ? " n/a |" : fmt::format(" {:.0f} |", e.ns_per_query());
     }
     fnfp += "\n", toi += "\n", ns += "\n";
   }
@@ -203,12 +205,12 @@ io::Json results_json(const std::vector<FamilyResult>& results) {
     if (r.family.empty()) continue;
     io::Json e = io::Json::object();
     for (const EngineTally& t : r.engines)
-      e[t.engine] = {{"fn", t.fn},
-                     {"fp", t.fp},
-                     {"no_answer", t.no_answer},
+      e[t.engine] = {{"fn", t.tally.misses},
+                     {"fp", t.tally.false_hits},
+                     {"no_answer", t.tally.no_answer},
                      {"fn_rate", r.fn_rate(t)},
                      {"fp_rate", r.fp_rate(t)},
-                     {"max_toi_error", t.max_toi_error},
+                     {"max_toi_error", t.tally.max_t_error},
                      {"mean_toi_error", t.mean_toi_error()},
                      {"toi_after", t.toi_after},
                      {"ns_per_query", t.ns_per_query()}};

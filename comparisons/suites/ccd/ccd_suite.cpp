@@ -146,12 +146,13 @@ void record(CheckList& c, const Family& f, const FamilyResult& r) {
       const std::string n = check_name(f, e.engine, what);
       if (c.declared(n)) c.set(n, value);
     };
-    set("false_negatives", static_cast<double>(e.fn));
+    const agreement::Tally& t = e.tally;
+    set("false_negatives", static_cast<double>(t.misses));
     set("toi_after_exact", static_cast<double>(e.toi_after));
     set("false_negative_rate", r.fn_rate(e));
     set("false_positive_rate", r.fp_rate(e));
-    set("max_toi_error", e.max_toi_error);
-    set("unanswered_rate", e.queries ? static_cast<double>(e.no_answer) / static_cast<double>(e.queries) : 0.0);
+    set("max_toi_error", t.max_t_error);
+    set("unanswered_rate", t.cases ? static_cast<double>(t.no_answer) / static_cast<double>(t.cases) : 0.0);
   }
   if (c.declared(check_name(f, "exact", "known_mismatches")))
     c.set(check_name(f, "exact", "known_mismatches"), static_cast<double>(r.known_mismatch));

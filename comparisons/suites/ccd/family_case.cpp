@@ -1,16 +1,13 @@
 #include "comparisons/suites/ccd/family_case.h"
 
 #include "comparisons/engines/ccd_engines.h"
-#ifdef TECIDO_HAVE_REFERENCE
 #include "reference/exact_ccd.h"
-#endif
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
 namespace tecido::suites::ccd {
-
-#ifdef TECIDO_HAVE_REFERENCE
 
 namespace {
 
@@ -45,32 +42,34 @@ std::vector<ExactCcd> referee(const std::vector<KnownQuery>& queries, const Sett
   return truth;
 }
 
-/// One engine on the block: timed answers, then the tally against the truth.
-EngineTally tally_engine(const SuiteEngine& engine, int engine_index, const std::vector<KnownQuery>& queries,
+/// Both hit: the time-of-impact error's sum and whether toi is certainly after t*.
+void toi_figures(const CcdAnswer& a, const ExactCcd& e, EngineTally& t) {
+  t.sum_toi_error += std::fabs(a.toi - e.toi);
+  // t* is e.toi when exact, otherwise strictly between the adjacent doubles toi_lo and toi_hi.
+  t.toi_after += a.toi > (e.toi_exact ? e.toi : e.toi_lo);
+}
+
+/// One engine on the block: timed answers, then the tally against the truth (agreement kit).
+EngineTally tally_engine(const SuiteEngine& engine, std::size_t engine_index, const std::vector<KnownQuery>& queries,
                          const std::vector<ExactCcd>& truth, const Settings& s, FamilyResult& r) {
   EngineTally t;
   const std::vector<std::optional<CcdAnswer>> got = answer_block(engine, queries, t.seconds);
   t.engine = engine.name;
-  t.queries = static_cast<long>(queries.size());
+  std::vector<agreement::Answer> want(queries.size());
+  std::vector<std::optional<agreement::Answer>> answers(queries.size());
   for (std::size_t i = 0; i < queries.size(); ++i) {
-    const ExactCcd& e = truth[i];
-    if (!got[i]) {
-      ++t.no_answer;
-      continue;
-    }
-    const CcdAnswer& a = *got[i];
-    t.fn += e.hit && !a.hit;
-    t.fp += a.hit && !e.hit;
-    if (a.hit != e.hit && r.disagree.size() < s.max_disagreements)
-      r.disagree.push_back({engine_index, static_cast<long>(i), e.hit});
-    if (!(a.hit && e.hit)) continue;
-    ++t.both_hit;
-    const double err = std::fabs(a.toi - e.toi);
-    t.max_toi_error = std::max(t.max_toi_error, err);
-    t.sum_toi_error += err;
-    // t* is e.toi when exact, otherwise strictly between the adjacent doubles toi_lo and toi_hi.
-    t.toi_after += a.toi > (e.toi_exact ? e.toi : e.toi_lo);
+    want[i] = {truth[i].hit, truth[i].toi};
+    if (got[i]) answers[i] = agreement::Answer{got[i]->hit, got[i]->toi};
   }
+  std::vector<agreement::Disagreement> disagree;
+  const std::size_t room = s.max_disagreements - std::min(s.max_disagreements, r.disagree.size());
+  t.tally = agreement::count_agreement(want, answers, &disagree, 0, room);
+  for (agreement::Disagreement& d : disagree) {
+    d.engine = engine_index;
+    r.disagree.push_back(d);
+  }
+  for (std::size_t i = 0; i < queries.size(); ++i)
+    if (got[i] && got[i]->hit && truth[i].hit) toi_figures(*got[i], truth[i], t);
   return t;
 }
 
@@ -83,17 +82,8 @@ FamilyResult run_family(const std::string& family, const std::vector<KnownQuery>
   r.queries = static_cast<long>(queries.size());
   const std::vector<ExactCcd> truth = referee(queries, s, r);
   for (std::size_t k = 0; k < engines.size(); ++k)
-    r.engines.push_back(tally_engine(engines[k], static_cast<int>(k), queries, truth, s, r));
+    r.engines.push_back(tally_engine(engines[k], k, queries, truth, s, r));
   return r;
 }
-
-#else
-
-FamilyResult run_family(const std::string&, const std::vector<KnownQuery>&, const Settings&,
-                        const std::vector<SuiteEngine>&) {
-  throw std::logic_error("the ccd suite needs the exact referee (reference build)");
-}
-
-#endif
 
 }  // namespace tecido::suites::ccd

@@ -5,10 +5,8 @@
 #include "core/cloth/self_collision.h"
 #include "core/cloth/self_collision_response.h"
 #include "core/dynamics/simulation.h"
-#ifdef TECIDO_HAVE_REFERENCE
 #include "reference/exact_ccd.h"
 #include "reference/exact_referee.h"
-#endif
 
 #include <algorithm>
 #include <cmath>
@@ -75,8 +73,6 @@ SheetScene sheet_through_sheet_scene(const SheetSettings& s) {
   }
   return out;
 }
-
-#ifdef TECIDO_HAVE_REFERENCE
 
 namespace {
 
@@ -153,14 +149,6 @@ SheetResult run_sheet_through_sheet(const SheetSettings& s) {
   runs(s, sc, r);
   return r;
 }
-
-#else
-
-SheetResult run_sheet_through_sheet(const SheetSettings&) {
-  throw std::logic_error("the sheet-through-sheet case needs the exact referee (reference build)");
-}
-
-#endif
 
 io::Json sheet_result_json(const SheetResult& r) {
   return {{"discrete_pairs", r.discrete_pairs},   {"exact_contacts", r.exact_contacts},

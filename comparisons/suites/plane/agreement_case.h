@@ -11,10 +11,10 @@
 namespace tecido::suites::plane {
 
 /// Generates the cases of `range` (category_case with `seed`), asks `referee` and each of
-/// `engines`. Result: {"hits": cases the referee says hit, "engines": [{"name", "seconds": thread
-/// CPU time over the block, "tally": [cases, agree, false hits, misses, no answer, both hit, exact
-/// path], "max_t_error", "disagree": [k, ...] (at most `max_disagreements`)}, ...]}. Throws what a
-/// generator or an engine throws, and when the referee gives no answer.
+/// `engines`. Result: comparisons/suites/agreement/block_result.h ("seconds": thread CPU time over
+/// the block; "exact path": the calls core's filter left to its exact path; at most
+/// `max_disagreements` disagreements). Throws what a generator or an engine throws, and when the
+/// referee gives no answer.
 io::Json run_agreement_case(std::uint64_t seed, const std::vector<Category>& categories, const CaseRange& range,
                             const SegmentPlaneEngine& referee, const std::vector<SegmentPlaneEngine>& engines,
                             std::size_t max_disagreements);

@@ -10,13 +10,7 @@ long category_cases(const Settings& s, const Category& category) {
 }
 
 std::vector<CaseRange> case_ranges(const Settings& s, const std::vector<Category>& categories) {
-  std::vector<CaseRange> out;
-  const long block = std::max(1L, s.block);
-  for (std::size_t c = 0; c < categories.size(); ++c) {
-    const long n = category_cases(s, categories[c]);
-    for (long first = 0; first < n; first += block) out.push_back({c, first, std::min(block, n - first)});
-  }
-  return out;
+  return agreement::case_ranges(agreement::family_sizes(categories, s.random_cases, s.cases_per_category), s.block);
 }
 
 std::size_t Layout::size(CaseGroup g) const {

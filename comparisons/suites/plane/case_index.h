@@ -7,6 +7,7 @@
 ///   drop          one height of the drop group.
 /// A case feeds the checks of one category group, one step or the drop group only, so a case that
 /// throws takes down just those.
+#include "comparisons/suites/agreement/case_blocks.h"
 #include "comparisons/suites/plane/categories.h"
 #include "comparisons/suites/plane/settings.h"
 
@@ -15,12 +16,9 @@
 
 namespace tecido::suites::plane {
 
-/// Cases [first, first + count) of category `category` (an index into the category table).
-struct CaseRange {
-  std::size_t category = 0;
-  long first = 0;
-  long count = 0;
-};
+/// Cases [first, first + count) of one category (comparisons/suites/agreement/case_blocks.h; its
+/// `family` is the index into the category table).
+using agreement::CaseRange;
 
 /// How many cases `category` has under `s`.
 long category_cases(const Settings& s, const Category& category);

@@ -55,10 +55,15 @@ io::PlaneCase box_case(Rng& r, double offset) {
 
 }  // namespace
 
+/// A random plane through a point in [-0.5, 0.5]^3 and a segment between two points in
+/// [-2.5, 2.5]^3; the plane's normal and forward are random unit vectors, half extents in [0.1, 2].
 io::PlaneCase random_case(Rng& r, long) { return box_case(r, 0.0); }
 
+/// random_case shifted 10^(3 + k mod 6) m from the origin in a random direction.
 io::PlaneCase far_case(Rng& r, long k) { return box_case(r, std::pow(10.0, 3 + static_cast<double>(k % 6))); }
 
+/// A segment through a point on one of the rectangle's four edges (up to one rounding), crossing
+/// the plane steeply (the sine of its angle to the plane is at least 0.2).
 io::PlaneCase edge_case(Rng& r, long) {
   const BoundedPlane p = random_plane(r, r.in_box(-1, 1));
   const double s = sign(r);
@@ -68,6 +73,7 @@ io::PlaneCase edge_case(Rng& r, long) {
   return through(r, p, c);
 }
 
+/// The same through one of the four corners.
 io::PlaneCase corner_case(Rng& r, long) {
   const BoundedPlane p = random_plane(r, r.in_box(-1, 1));
   const double sy = sign(r);
@@ -75,6 +81,8 @@ io::PlaneCase corner_case(Rng& r, long) {
   return through(r, p, p.position + sx * p.half_extents.x() * p.forward + sy * p.half_extents.y() * p.right());
 }
 
+/// A segment at an angle of 1e-12 .. 1e-3 rad to the plane, through a point of the plane within 1.2
+/// half extents of the centre (so some cross the rectangle, some pass beside it).
 io::PlaneCase grazing_case(Rng& r, long) {
   const BoundedPlane p = random_plane(r, r.in_box(-1, 1));
   const double cy = r.uniform(-1.2, 1.2);
@@ -88,6 +96,8 @@ io::PlaneCase grazing_case(Rng& r, long) {
   return {"", p, c - a * d, c + b * d};
 }
 
+/// On an axis-aligned plane at a dyadic height (flat_plane): a segment parallel to it, 1 .. 2^-39
+/// above or below, exactly.
 io::PlaneCase parallel_case(Rng& r, long) {
   const BoundedPlane p = flat_plane(r);
   const double dz = std::ldexp(1.0, -static_cast<int>(r.below(40)));  // 1 down to 2^-39
@@ -96,6 +106,7 @@ io::PlaneCase parallel_case(Rng& r, long) {
   return {"", p, flat_point(r, -3, 3, -3, 3, z), to};
 }
 
+/// On such a plane: a segment lying exactly in it, inside, across or beside the rectangle.
 io::PlaneCase in_plane_case(Rng& r, long) {
   const BoundedPlane p = flat_plane(r);
   const double z = p.position.z();
@@ -114,12 +125,14 @@ std::pair<Vec3, Vec3> on_and_off(Rng& r, const BoundedPlane& p) {
 }
 }  // namespace
 
+/// On such a plane: a segment whose first end point lies exactly on the plane.
 io::PlaneCase start_on_case(Rng& r, long) {
   const BoundedPlane p = flat_plane(r);
   const auto [on, off] = on_and_off(r, p);
   return {"", p, on, off};
 }
 
+/// On such a plane: a segment whose second end point lies exactly on the plane.
 io::PlaneCase end_on_case(Rng& r, long) {
   const BoundedPlane p = flat_plane(r);
   const auto [on, off] = on_and_off(r, p);
@@ -142,10 +155,7 @@ const std::vector<Category>& categories() {
 }
 
 io::PlaneCase category_case(std::uint64_t seed, std::size_t c, const Category& category, long k) {
-  Rng r(substream(seed, c * 100000000ULL + static_cast<std::uint64_t>(k)));
-  io::PlaneCase out = category.make(r, k);
-  out.id = category.name + "/" + std::to_string(k);
-  return out;
+  return agreement::family_case(category, Rng(substream(seed, c * 100000000ULL + static_cast<std::uint64_t>(k))), k);
 }
 
 std::string case_category(const std::string& id) { return id.substr(0, id.find('/')); }

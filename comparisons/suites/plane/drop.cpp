@@ -4,10 +4,8 @@
 #include "comparisons/suites/sweep.h"
 #include "core/dynamics/simulation.h"
 
-#ifdef TECIDO_HAVE_REFERENCE
 #include "reference/bullet_deformable.h"
 #include "reference/bullet_rigid_drop.h"
-#endif
 
 #include <algorithm>
 #include <cmath>
@@ -42,7 +40,6 @@ void run_core(const DropSettings& s, const Scene& scene, DropRow& row) {
   row.apex_core = std::isfinite(apex) ? apex : NAN;
 }
 
-#ifdef TECIDO_HAVE_REFERENCE
 void run_bullet(const DropSettings& s, const Scene& scene, DropRow& row) {
   const double duration = drop_duration(s, row.z0);
   const auto rigid = reference::bullet_sphere_drop(row.z0, 0.0, s.gravity, s.elasticity, s.sphere_radius, s.dt, duration);
@@ -61,7 +58,6 @@ void run_bullet(const DropSettings& s, const Scene& scene, DropRow& row) {
   row.apex_node = std::isfinite(apex) ? apex : NAN;
   row.bullet = true;
 }
-#endif
 
 }  // namespace
 
@@ -72,9 +68,7 @@ DropRow run_drop(const DropSettings& s, double z0) {
   row.apex_exact = rebound_apex(z0, s.elasticity);
   const Scene scene = core_drop_scene(s, z0);
   run_core(s, scene, row);
-#ifdef TECIDO_HAVE_REFERENCE
   run_bullet(s, scene, row);
-#endif
   return row;
 }
 

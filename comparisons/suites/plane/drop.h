@@ -27,7 +27,7 @@ struct DropRow {
 /// How long each engine runs: until into_fall of the first rebound's flight after t_exact [s].
 double drop_duration(const DropSettings& s, double z0);
 
-/// Runs the drop from z0 (Bullet columns only with TECIDO_HAVE_REFERENCE).
+/// Runs the drop from z0 in core and in Bullet.
 DropRow run_drop(const DropSettings& s, double z0);
 
 io::Json drop_json(const DropRow& r);

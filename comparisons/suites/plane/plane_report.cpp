@@ -1,5 +1,7 @@
 #include "comparisons/suites/plane/plane_report.h"
 
+#include "comparisons/suites/agreement/report_text.h"
+
 #include <fmt/format.h>
 
 #include <cmath>
@@ -25,8 +27,7 @@ std::string method_markdown(const Settings& s, std::uint64_t seed, const std::st
       "crossing-fraction error |t - t_exact| where both hit. ns/case: CPU time of the case's thread per random case, "
       "while other cases run on the other cores. Categories:\n\n",
       s.random_cases, s.cases_per_category, seed, s.block, referee);
-  for (const Category& c : categories) md += fmt::format("- `{}`: {}\n", c.name, c.about);
-  md += "\nChecked per group of categories, each group with its band in the tolerance file "
+  md += agreement::family_list(categories) + "\nChecked per group of categories, each group with its band in the tolerance file "
         "(/plane/<engine>_agreement_<group>): ";
   bool first = true;
   for (const CategoryGroup& g : category_groups()) {
@@ -63,15 +64,12 @@ std::string agreement_table(const std::vector<Category>& categories, const Agree
         continue;
       }
       const Tally& t = table.tally[c][e];
-      const double ns = ns_per_case(table, e);
-      const std::string ns_cell = categories[c].random && std::isfinite(ns) ? fmt::format("{:.0f}", ns) : "";
+      const std::string ns_cell = categories[c].random ? agreement::ns_text(table, e) : "";
       md += fmt::format("| {} | {} | {} | {} | {} | {} | {} | {} | {} | {} |\n", table.engines[e], categories[c].name,
                         t.cases, t.agree, t.false_hits, t.misses, t.no_answer, t.both_hit, t_cell(t), ns_cell);
     }
   }
-  for (std::size_t c = 0; c < categories.size(); ++c)
-    if (!table.error[c].empty()) md += fmt::format("\nCategory `{}` failed: {}\n", categories[c].name, table.error[c]);
-  return md;
+  return md + agreement::failed_notes(agreement::family_names(categories), table, "Category");
 }
 
 namespace {
@@ -86,16 +84,9 @@ const char* scope_words(CheckScope scope) {
 }
 
 /// "category (n of cases), ..." for the categories where `count` of the tally is positive.
-template <class Count>
 std::string per_category(const std::vector<Category>& categories, const AgreementTable& table, std::size_t e,
-                         Count count) {
-  std::string s;
-  for (std::size_t c = 0; c < categories.size(); ++c) {
-    if (!table.error[c].empty()) continue;
-    const Tally& t = table.tally[c][e];
-    if (count(t) > 0) s += fmt::format("{}{} ({} of {})", s.empty() ? "" : ", ", categories[c].name, count(t), t.cases);
-  }
-  return s;
+                         agreement::Count count) {
+  return agreement::family_counts(agreement::family_names(categories), table, e, count);
 }
 
 /// The largest t error where both hit, over the categories whose t error is checked, and over the
@@ -151,17 +142,14 @@ std::string agreement_conclusions(const std::vector<Category>& categories, const
 }
 
 std::string disagreements_markdown(std::size_t kept, long found, const std::string& file) {
-  return fmt::format(
-      "\n{} of the {} disagreements with the referee are in `{}` (ids `engine:category/k`); `tecido plane --cases "
-      "DIR/{} --json`, DIR being this report's directory, reruns them with every engine.\n\n",
-      kept, found, file, file);
+  return agreement::disagreements_paragraph(kept, found, file, "category", "tecido plane --cases") + "\n";
 }
 
 io::Json agreement_json(const std::vector<Category>& categories, const AgreementTable& table) {
   io::Json data = io::Json::object();
   for (std::size_t e = 0; e < table.engines.size(); ++e) {
     io::Json& j = data[table.engines[e]];
-    const double ns = ns_per_case(table, e);
+    const double ns = agreement::ns_per_case(table, e);
     j["ns_per_case"] = std::isfinite(ns) ? io::Json(ns) : io::Json(nullptr);
     for (std::size_t c = 0; c < categories.size(); ++c) {
       const Tally& t = table.tally[c][e];

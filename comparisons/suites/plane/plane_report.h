@@ -2,7 +2,8 @@
 /// The `plane` suite's report on agreement: the method paragraph (from the settings), the table of
 /// every engine on every category, conclusions derived from that table, and the disagreement
 /// file's paragraph. The contact-time and drop sections are contact_time_report.h and drop_report.h.
-#include "comparisons/suites/plane/agreement.h"
+#include "comparisons/io/json_reader.h"
+#include "comparisons/suites/plane/group_tally.h"
 #include "comparisons/suites/plane/settings.h"
 
 #include <cstdint>

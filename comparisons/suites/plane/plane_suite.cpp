@@ -1,11 +1,12 @@
 #include "comparisons/suites/plane/plane_suite.h"
 
 #include "comparisons/io/atomic_file.h"
-#include "comparisons/suites/plane/agreement.h"
+#include "comparisons/suites/agreement/block_result.h"
+#include "comparisons/suites/agreement/disagreements.h"
 #include "comparisons/suites/plane/agreement_case.h"
 #include "comparisons/suites/plane/check_plan.h"
 #include "comparisons/suites/plane/contact_time_report.h"
-#include "comparisons/suites/plane/disagreements.h"
+#include "comparisons/suites/plane/group_tally.h"
 #include "comparisons/suites/plane/drop_report.h"
 #include "comparisons/suites/plane/plane_report.h"
 #include "comparisons/suites/plane/theory.h"
@@ -23,12 +24,6 @@ namespace {
 
 constexpr const char* kReferee = "exact";
 constexpr const char* kDisagreementFile = "plane/disagreements.json";
-
-#ifdef TECIDO_HAVE_REFERENCE
-constexpr bool kBullet = true;
-#else
-constexpr bool kBullet = false;
-#endif
 
 std::vector<std::string> engine_names(const Plan& plan) {
   std::vector<std::string> names;
@@ -52,7 +47,6 @@ Plan make_plan(const SuiteContext& ctx, Settings s, std::vector<Category> catego
       plan.engines.push_back(e);
     }
   }
-  plan.bullet = kBullet;
   plan.layout = layout(plan.settings, plan.categories, plan.referee.has_value());
   plan.checks = declare_checks(plan.settings, engine_names(plan), plan.referee ? kReferee : "", plan.bullet,
                                *ctx.tolerances);
@@ -131,15 +125,20 @@ void record_agreement(CheckList& checks, const Plan& plan, const AgreementTable&
 /// The agreement section: table, conclusions, the disagreement file; the checks' values.
 std::string agreement_section(CheckList& checks, const Plan& plan, const std::string& out_dir,
                               const std::vector<io::Json>& results, io::Json& data) {
-  AgreementTable table = empty_table(plan.categories.size(), engine_names(plan));
-  for (std::size_t i = 0; i < plan.layout.blocks.size(); ++i)
-    add_case(table, plan.layout.blocks[i], plan.categories, results.at(case_index(plan.layout, {CaseGroup::Agreement, i})));
+  AgreementTable table = agreement::empty_table(plan.categories.size(), engine_names(plan));
+  for (std::size_t i = 0; i < plan.layout.blocks.size(); ++i) {
+    const CaseRange& range = plan.layout.blocks[i];
+    agreement::add_block(table, range, plan.categories.at(range.family).random,
+                         results.at(case_index(plan.layout, {CaseGroup::Agreement, i})));
+  }
   record_agreement(checks, plan, table);
-  const auto kept = disagreement_cases(plan.case_seed, plan.categories, table, plan.settings.max_disagreements);
-  write_disagreements(out_dir + "/" + kDisagreementFile, kept);
+  const auto kept = agreement::disagreement_cases<io::PlaneCase>(
+      table, agreement::kept_disagreements(table, plan.settings.max_disagreements),
+      [&plan](std::size_t c, long k) { return category_case(plan.case_seed, c, plan.categories.at(c), k); });
+  io::write_file_atomic(out_dir + "/" + kDisagreementFile, io::plane_cases_to_json(kept).dump(1) + "\n");
   data["agreement"] = agreement_json(plan.categories, table);
   return agreement_table(plan.categories, table) + agreement_conclusions(plan.categories, table, kReferee) +
-         disagreements_markdown(kept.size(), disagreements_found(table), kDisagreementFile);
+         disagreements_markdown(kept.size(), agreement::disagreements_found(table), kDisagreementFile);
 }
 
 ContactTable contact_table_of(const Plan& plan, const std::vector<io::Json>& results) {

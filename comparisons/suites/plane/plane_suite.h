@@ -4,12 +4,14 @@
 /// a floor: the bisected time of contact against the analytic root, by step and by bisection
 /// tolerance; and one drop in core and in Bullet, contact time and rebound apex against theory).
 ///
-/// Layout: settings.h (what runs), theory.* (contact time, rebound apex), categories.* (one
-/// generator per category, in a table), case_index.* (the cases of the sweep), agreement_case.* and
-/// agreement.* (one block of cases and the statistics), check_plan.* (the checks, declared before
-/// anything runs), disagreements.* (the cases file), contact_time.* and drop.* (the two dynamic
-/// groups), plane_report.*, contact_time_report.* and drop_report.* (tables and prose); this file
-/// makes the plan, the sweep, and assembles.
+/// Its static part is an instance of the agreement kit (comparisons/suites/agreement/: family table,
+/// blocks, tally, disagreement file, report pieces). Layout: settings.h (what runs), theory.*
+/// (contact time, rebound apex), categories.* (one generator per category, in a table),
+/// case_index.* (the cases of the sweep), agreement_case.* (one block of cases), group_tally.* (the
+/// statistics per group of categories), check_plan.* (the checks, declared before anything runs),
+/// contact_time.* and drop.* (the two dynamic groups), plane_report.*, contact_time_report.* and
+/// drop_report.* (tables and prose); this file makes the plan, the sweep, assembles, and writes the
+/// cases file of the disagreements.
 #include "comparisons/engines/segment_plane_engines.h"
 #include "comparisons/suites/check.h"
 #include "comparisons/suites/plane/case_index.h"
@@ -32,7 +34,7 @@ struct Plan {
   std::vector<Category> categories;
   std::optional<SegmentPlaneEngine> referee;  ///< the engine named "exact", when built in
   std::vector<SegmentPlaneEngine> engines;    ///< every other engine, in registry order
-  bool bullet = false;                        ///< the drop group runs Bullet (a build with the reference engines)
+  bool bullet = true;                         ///< the drop group runs Bullet
   Layout layout;
   CheckList checks;
 };

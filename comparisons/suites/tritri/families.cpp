@@ -38,6 +38,7 @@ Triangle sliver(Rng& r) {
 
 }  // namespace
 
+/// Random pairs: six points uniform in the unit cube.
 io::TriPair random_pair(Rng& r, long) {
   io::TriPair p;
   p.a = unit_cube_triangle(r);
@@ -45,6 +46,7 @@ io::TriPair random_pair(Rng& r, long) {
   return p;
 }
 
+/// b within 1e-16 .. 1e-6 of a's plane (per vertex, either side).
 io::TriPair near_coplanar_pair(Rng& r, long) {
   io::TriPair p;
   p.a = unit_cube_triangle(r);
@@ -58,6 +60,7 @@ io::TriPair near_coplanar_pair(Rng& r, long) {
   return p;
 }
 
+/// Exactly coplanar: integer combinations of two integer vectors from an integer origin.
 io::TriPair coplanar_pair(Rng& r, long) {
   Vec3 o, u, v;
   do {
@@ -75,6 +78,7 @@ io::TriPair coplanar_pair(Rng& r, long) {
   return p;
 }
 
+/// A vertex of b exactly on a's closed face (a dyadic barycentric point of a lattice triangle).
 io::TriPair touch_vertex_pair(Rng& r, long) {
   io::TriPair p;
   p.a = lattice_triangle(r, 6);
@@ -93,6 +97,7 @@ io::TriPair touch_vertex_pair(Rng& r, long) {
   return p;
 }
 
+/// An edge of b passes exactly through the midpoint of an edge of a.
 io::TriPair touch_edge_pair(Rng& r, long) {
   io::TriPair p;
   p.a = lattice_triangle(r, 6);
@@ -104,6 +109,7 @@ io::TriPair touch_edge_pair(Rng& r, long) {
   return p;
 }
 
+/// b's first vertex is one of a's vertices.
 io::TriPair shared_vertex_pair(Rng& r, long) {
   io::TriPair p;
   for (auto& q : p.a) q = r.in_box(-1, 1);
@@ -112,6 +118,7 @@ io::TriPair shared_vertex_pair(Rng& r, long) {
   return p;
 }
 
+/// a nearly or exactly collinear; b a sliver too or a random triangle.
 io::TriPair sliver_pair(Rng& r, long) {
   io::TriPair p;
   p.a = sliver(r);
@@ -119,6 +126,7 @@ io::TriPair sliver_pair(Rng& r, long) {
   return p;
 }
 
+/// Unit-size random pairs shifted 10^(3 + k mod 6) from the origin.
 io::TriPair offset_pair(Rng& r, long k) {
   io::TriPair p;
   const Vec3 shift = std::pow(10.0, 3 + static_cast<double>(k % 6)) * r.unit_vector();
@@ -142,10 +150,7 @@ const std::vector<Family>& families() {
 }
 
 io::TriPair family_pair(std::uint64_t seed, std::size_t f, const Family& family, long k) {
-  Rng r(substream(substream(seed, 1000 + f), static_cast<std::uint64_t>(k)));
-  io::TriPair p = family.make(r, k);
-  p.id = family.name + "/" + std::to_string(k);
-  return p;
+  return agreement::family_case(family, Rng(substream(substream(seed, 1000 + f), static_cast<std::uint64_t>(k))), k);
 }
 
 }  // namespace tecido::suites::tritri

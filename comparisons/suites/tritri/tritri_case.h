@@ -13,10 +13,10 @@ namespace tecido::suites::tritri {
 
 /// Generates the pairs of `range` (families.h: family_pair with `seed`), asks `referee`, each of
 /// `engines`, then each of `outside` (the whole block in one batch through its door). Result:
-/// {"intersecting": pairs the referee says intersect, "engines": [{"name", "seconds": thread CPU
-/// time over the block (for a process engine, plus the wall time of its round trips: its work is
-/// not this thread's, and the door is part of its cost), "tally": [agree, pairs, no answer], "disagree": [k, ...]
-/// (at most `max_disagreements`)}, ...]}. Throws what a generator or an engine throws.
+/// comparisons/suites/agreement/block_result.h ("hits": pairs the referee says intersect), each
+/// engine's "seconds" the thread's CPU time over the block (for a process engine, plus the wall
+/// time of its round trips: its work is not this thread's, and the door is part of its cost).
+/// Throws what a generator or an engine throws.
 io::Json run_tritri_case(std::uint64_t seed, const std::vector<Family>& families, const CaseRange& range,
                          const TriTriEngine& referee, const std::vector<TriTriEngine>& engines,
                          std::size_t max_disagreements, const std::vector<outside::OutsideEnginePtr>& outside = {});

@@ -1,5 +1,6 @@
 #include "comparisons/suites/tritri/tritri_report.h"
 
+#include "comparisons/suites/agreement/report_text.h"
 #include "comparisons/suites/tritri/check_plan.h"
 
 #include <fmt/format.h>
@@ -17,8 +18,7 @@ std::string method_markdown(const Settings& s, std::uint64_t seed, const std::st
       "engine gave no answer. ns/pair: CPU time of the case's thread per random pair, while the other cases run on "
       "the other cores (the `bench` suite times the same tests alone). Families:\n\n",
       s.random_pairs, s.pairs_per_family, seed, s.block, referee);
-  for (const Family& f : families) md += fmt::format("- `{}`: {}\n", f.name, f.about);
-  return md + "\n";
+  return md + agreement::family_list(families) + "\n";
 }
 
 std::string outside_markdown(const std::vector<outside::OutsideEnginePtr>& outside) {
@@ -40,8 +40,8 @@ std::string outside_markdown(const std::vector<outside::OutsideEnginePtr>& outsi
 }
 
 namespace {
-std::string cell(const Tally& t) {
-  return fmt::format("{}/{}{}", t.agree, t.pairs, t.no_answer ? fmt::format(" ({} n/a)", t.no_answer) : "");
+std::string tritri_cell(const agreement::Tally& t) {
+  return fmt::format("{}/{}{}", t.agree, t.cases, t.no_answer ? fmt::format(" ({} n/a)", t.no_answer) : "");
 }
 }  // namespace
 
@@ -50,32 +50,26 @@ std::string agreement_table(const std::vector<Family>& families, const Agreement
   for (std::size_t f = 0; f < families.size(); ++f) {
     md += " " + families[f].name + " |";
     rule += "---:|";
-    truth += table.error[f].empty() ? fmt::format(" {} |", table.intersecting[f]) : " failed |";
+    truth += table.error[f].empty() ? fmt::format(" {} |", table.hits[f]) : " failed |";
   }
   md += "\n" + rule + "\n" + truth + "\n";
   for (std::size_t e = 0; e < table.engines.size(); ++e) {
-    const double ns = ns_per_pair(table, e);
-    md += fmt::format("| {} | {} |", table.engines[e], std::isfinite(ns) ? fmt::format("{:.0f}", ns) : "–");
+    const std::string ns = agreement::ns_text(table, e);
+    md += fmt::format("| {} | {} |", table.engines[e], ns.empty() ? "–" : ns);
     for (std::size_t f = 0; f < families.size(); ++f)
-      md += " " + (table.error[f].empty() ? cell(table.tally[f][e]) : std::string("failed")) + " |";
+      md += " " + (table.error[f].empty() ? tritri_cell(table.tally[f][e]) : std::string("failed")) + " |";
     md += "\n";
   }
-  for (std::size_t f = 0; f < families.size(); ++f)
-    if (!table.error[f].empty()) md += fmt::format("\nFamily `{}` failed: {}\n", families[f].name, table.error[f]);
-  return md;
+  return md + agreement::failed_notes(agreement::family_names(families), table, "Family");
 }
 
 namespace {
 /// "agrees on every pair" or "disagrees on coplanar (3 of 500), ...; no answer on ... (94)".
 std::string engine_findings(const std::vector<Family>& families, const AgreementTable& table, std::size_t e) {
-  std::string wrong, silent;
-  for (std::size_t f = 0; f < families.size(); ++f) {
-    if (!table.error[f].empty()) continue;
-    const Tally& t = table.tally[f][e];
-    const long bad = t.pairs - t.agree - t.no_answer;
-    if (bad > 0) wrong += fmt::format("{}{} ({} of {})", wrong.empty() ? "" : ", ", families[f].name, bad, t.pairs);
-    if (t.no_answer > 0) silent += fmt::format("{}{} ({})", silent.empty() ? "" : ", ", families[f].name, t.no_answer);
-  }
+  const std::vector<std::string> names = agreement::family_names(families);
+  const std::string wrong = agreement::family_counts(names, table, e, [](const agreement::Tally& t) { return t.disagreements(); });
+  const std::string silent =
+      agreement::family_counts(names, table, e, [](const agreement::Tally& t) { return t.no_answer; }, false);
   std::string s = wrong.empty() ? "agrees with the referee on every evaluated pair" : "disagrees on " + wrong;
   if (!silent.empty()) s += "; no answer on " + silent;
   return s;
@@ -106,21 +100,18 @@ std::string conclusions_markdown(const std::vector<Family>& families, const Agre
 }
 
 std::string disagreements_markdown(std::size_t kept, long found, const std::string& file) {
-  return fmt::format(
-      "\n{} of the {} disagreements with the referee are in `{}` (ids `engine:family/k`); `tecido tritri --pairs "
-      "DIR/{} --json`, DIR being this report's directory, reruns them with every engine.\n",
-      kept, found, file, file);
+  return agreement::disagreements_paragraph(kept, found, file, "family", "tecido tritri --pairs");
 }
 
 io::Json table_json(const std::vector<Family>& families, const AgreementTable& table) {
   io::Json data = io::Json::object();
   for (std::size_t e = 0; e < table.engines.size(); ++e) {
-    const double ns = ns_per_pair(table, e);
+    const double ns = agreement::ns_per_case(table, e);
     io::Json& j = data[table.engines[e]];
     j["ns_per_pair"] = std::isfinite(ns) ? io::Json(ns) : io::Json(nullptr);
     for (std::size_t f = 0; f < families.size(); ++f) {
-      const Tally& t = table.tally[f][e];
-      j[families[f].name] = {{"agree", t.agree}, {"pairs", t.pairs}, {"no_answer", t.no_answer}};
+      const agreement::Tally& t = table.tally[f][e];
+      j[families[f].name] = {{"agree", t.agree}, {"pairs", t.cases}, {"no_answer", t.no_answer}};
       if (!table.error[f].empty()) j[families[f].name]["error"] = table.error[f];
     }
   }

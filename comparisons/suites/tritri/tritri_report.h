@@ -3,7 +3,9 @@
 /// from that table, and the disagreement file's paragraph. Every number comes from the settings
 /// or from the run's AgreementTable.
 #include "comparisons/engines/outside/outside_engine.h"
-#include "comparisons/suites/tritri/agreement.h"
+#include "comparisons/io/json_reader.h"
+#include "comparisons/suites/agreement/table.h"
+#include "comparisons/suites/tritri/families.h"
 #include "comparisons/suites/tritri/settings.h"
 
 #include <cstdint>
@@ -11,6 +13,8 @@
 #include <vector>
 
 namespace tecido::suites::tritri {
+
+using agreement::AgreementTable;
 
 /// Counts, seed, referee, and what each family claims, from the settings and the family table.
 std::string method_markdown(const Settings& s, std::uint64_t seed, const std::string& referee,

@@ -1,10 +1,11 @@
 #include "comparisons/suites/tritri/tritri_suite.h"
 
 #include "comparisons/engines/outside/outside_engines.h"
-#include "comparisons/suites/tritri/agreement.h"
+#include "comparisons/io/atomic_file.h"
+#include "comparisons/suites/agreement/block_result.h"
+#include "comparisons/suites/agreement/disagreements.h"
 #include "comparisons/suites/tritri/case_index.h"
 #include "comparisons/suites/tritri/check_plan.h"
-#include "comparisons/suites/tritri/disagreements.h"
 #include "comparisons/suites/tritri/tritri_case.h"
 #include "comparisons/suites/tritri/tritri_report.h"
 
@@ -14,7 +15,7 @@ namespace tecido::suites {
 
 namespace {
 
-using tritri::AgreementTable;
+using agreement::AgreementTable;
 using tritri::Family;
 
 constexpr const char* kReferee = "exact";
@@ -85,16 +86,21 @@ SuiteResult assemble(const Plan& plan, const SuiteContext& ctx, const std::vecto
     res.markdown = "The exact referee is not built in (reference adapters off): no agreement measured, no check declared.\n";
     return res;
   }
-  AgreementTable table = tritri::empty_table(plan.families.size(), engine_names(plan));
-  for (std::size_t k = 0; k < results.size(); ++k) tritri::add_case(table, plan.cases.at(k), plan.families, results[k]);
+  AgreementTable table = agreement::empty_table(plan.families.size(), engine_names(plan));
+  for (std::size_t k = 0; k < results.size(); ++k) {
+    const agreement::CaseRange& range = plan.cases.at(k);
+    agreement::add_block(table, range, plan.families.at(range.family).random, results[k]);
+  }
   CheckList checks = plan.checks;
   record(checks, plan, table);
-  const auto kept = tritri::disagreement_pairs(plan.seed, plan.families, table, plan.settings.max_disagreements);
-  tritri::write_disagreements(ctx.out_dir + "/" + kDisagreementFile, kept);
+  const auto kept = agreement::disagreement_cases<io::TriPair>(
+      table, agreement::kept_disagreements(table, plan.settings.max_disagreements),
+      [&plan](std::size_t f, long k) { return tritri::family_pair(plan.seed, f, plan.families.at(f), k); });
+  io::write_file_atomic(ctx.out_dir + "/" + kDisagreementFile, io::tri_pairs_to_json(kept).dump() + "\n");
   res.markdown = tritri::method_markdown(plan.settings, ctx.seed, kReferee, plan.families) +
                  tritri::outside_markdown(plan.outside) + tritri::agreement_table(plan.families, table) + "\n" +
                  tritri::conclusions_markdown(plan.families, table, kReferee, outside_names(plan)) +
-                 tritri::disagreements_markdown(kept.size(), tritri::disagreements_found(table), kDisagreementFile);
+                 tritri::disagreements_markdown(kept.size(), agreement::disagreements_found(table), kDisagreementFile);
   res.data = tritri::table_json(plan.families, table);
   res.checks = checks.finish();
   return res;

@@ -2,10 +2,11 @@
 /// Suite `tritri`: every triangle-triangle engine against the exact referee on random pairs and
 /// adversarial families, by family, with nanoseconds per random pair.
 ///
-/// Layout: settings.h (what runs), families.* (one generator per family, in a table),
-/// case_index.* (pairs into cases), tritri_case.* (one case), agreement.* (the statistics),
-/// check_plan.* (the checks, declared before anything runs), disagreements.* (the pairs file),
-/// tritri_report.* (tables and prose); this file builds the sweep and assembles.
+/// An instance of the agreement kit (comparisons/suites/agreement/: family table, blocks, tally,
+/// disagreement file, report pieces). Layout: settings.h (what runs), families.* (one generator per
+/// family, in a table), case_index.h (pairs into cases), tritri_case.* (one case), check_plan.* (the
+/// checks, declared before anything runs), tritri_report.* (tables and prose); this file builds the
+/// sweep, assembles, and writes the pairs file of the disagreements.
 #include "comparisons/engines/outside/outside_engine.h"
 #include "comparisons/engines/tri_tri_engines.h"
 #include "comparisons/suites/suite.h"

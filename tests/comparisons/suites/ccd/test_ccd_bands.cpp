@@ -6,11 +6,9 @@
 namespace tecido::suites {
 namespace {
 
-#ifdef TECIDO_HAVE_REFERENCE
 TEST(CcdBands, AnImpossibleTimeOfImpactBandFailsItsChecksAndChangesNothingElse) {
   testing::expect_band_decides_only_pass_or_fail(&run_ccd_suite, "/ccd/core_random_max_toi_error", -1.0);
 }
-#endif
 
 }  // namespace
 }  // namespace tecido::suites

@@ -6,16 +6,12 @@
 #include "comparisons/io/ccd_queries.h"
 #include "comparisons/suites/ccd/families.h"
 #include "tests/support/cli_runner.h"
-#ifdef TECIDO_HAVE_REFERENCE
 #include "reference/exact_ccd.h"
-#endif
 
 #include <gtest/gtest.h>
 
 namespace tecido::suites {
 namespace {
-
-#ifdef TECIDO_HAVE_REFERENCE
 
 TEST(CcdSuite, QuickRunPassesEveryDeclaredCheckAndWritesItsDisagreements) {
   const Tolerances tol = Tolerances::load(std::string(TECIDO_SOURCE_DIR) + "/data/tolerances.json");
@@ -47,8 +43,6 @@ TEST(CcdSuite, QuickRunPassesEveryDeclaredCheckAndWritesItsDisagreements) {
     EXPECT_NE(e.id.rfind("exact:", 0), 0u) << "the referee never disagrees with itself: " << e.id;
   }
 }
-
-#endif
 
 }  // namespace
 }  // namespace tecido::suites

@@ -3,9 +3,7 @@
 // property on every family: no missed contact, never a time after the referee's.
 #include "comparisons/engines/ccd_engines.h"
 #include "comparisons/suites/ccd/families.h"
-#ifdef TECIDO_HAVE_REFERENCE
 #include "reference/exact_ccd.h"
-#endif
 
 #include <gtest/gtest.h>
 
@@ -60,8 +58,6 @@ TEST(CcdFamilies, ConstructedFamiliesHaveBothAnswers) {
   }
 }
 
-#ifdef TECIDO_HAVE_REFERENCE
-
 TEST(CcdFamilies, TheRefereeReproducesEveryConstructedAnswer) {
   const Settings s = small(300);
   for (std::size_t k = 0; k < families().size(); ++k) {
@@ -113,8 +109,6 @@ TEST(CcdFamilies, CoreNeverMissesAndIsNeverLate) {
     EXPECT_EQ(late, 0) << family_name(families()[k]);
   }
 }
-
-#endif
 
 }  // namespace
 }  // namespace tecido::suites::ccd

@@ -78,8 +78,6 @@ TEST(SheetThroughSheet, PairResponsesGetTheContactsTriangles) {
   }
 }
 
-#ifdef TECIDO_HAVE_REFERENCE
-
 TEST(SheetThroughSheet, CoreMatchesTheRefereeAndTheImpulseKeepsTheSheetsApart) {
   const SheetResult r = run_sheet_through_sheet(small());
   EXPECT_EQ(r.discrete_pairs, 0);
@@ -94,8 +92,6 @@ TEST(SheetThroughSheet, CoreMatchesTheRefereeAndTheImpulseKeepsTheSheetsApart) {
   EXPECT_EQ(r.impulse_steps, small().steps);
   EXPECT_EQ(r.impulse_contacts, 0);
 }
-
-#endif
 
 }  // namespace
 }  // namespace tecido::suites::ccd

@@ -29,11 +29,11 @@ TEST(PlaneCaseIndex, BlocksCoverEveryCaseOnceInCategoryOrder) {
   std::vector<std::set<long>> seen(cats.size());
   std::size_t last_category = 0;
   for (const CaseRange& r : ranges) {
-    EXPECT_GE(r.category, last_category);  // category-major
-    last_category = r.category;
+    EXPECT_GE(r.family, last_category);  // category-major
+    last_category = r.family;
     EXPECT_GT(r.count, 0);
     EXPECT_LE(r.count, s.block);
-    for (long k = r.first; k < r.first + r.count; ++k) EXPECT_TRUE(seen[r.category].insert(k).second) << k;
+    for (long k = r.first; k < r.first + r.count; ++k) EXPECT_TRUE(seen[r.family].insert(k).second) << k;
   }
   for (std::size_t c = 0; c < cats.size(); ++c) {
     const long n = cats[c].random ? 250 : 70;

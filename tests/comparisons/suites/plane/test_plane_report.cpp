@@ -12,7 +12,7 @@ namespace {
 bool has(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
 
 AgreementTable two_engines() {
-  AgreementTable t = empty_table(categories().size(), {"core", "core-seed"});
+  AgreementTable t = agreement::empty_table(categories().size(), {"core", "core-seed"});
   for (std::size_t c = 0; c < categories().size(); ++c)
     for (std::size_t e = 0; e < 2; ++e) {
       Tally& x = t.tally[c][e];

@@ -1,7 +1,10 @@
-// The tritri suite's agreement statistics (comparisons/suites/tritri/agreement.*) and its
-// disagreement file (disagreements.*) on planted data with hand-counted answers.
-#include "comparisons/suites/tritri/agreement.h"
-#include "comparisons/suites/tritri/disagreements.h"
+// The tritri suite on the agreement kit (comparisons/suites/agreement/): one case (tritri_case.*)
+// tallies every engine against the referee on hand-checkable engines, and the disagreement file's
+// pairs are regenerated from (seed, family, k).
+#include "comparisons/suites/agreement/block_result.h"
+#include "comparisons/suites/agreement/disagreements.h"
+#include "comparisons/suites/tritri/tritri_case.h"
+#include "core/geometry/tri_tri_intersect.h"
 
 #include <gtest/gtest.h>
 
@@ -10,65 +13,45 @@
 namespace tecido::suites::tritri {
 namespace {
 
-TEST(TritriAgreement, CountsAgreementsMissingAnswersAndDisagreements) {
-  // truth:   1 0 1 0 1 1
-  // answers: 1 1 - 0 0 1   -> agree at 0, 3, 5; no answer at 2; disagree at 1 and 4.
-  const std::vector<char> truth = {1, 0, 1, 0, 1, 1};
-  const std::vector<std::optional<bool>> answers = {true, true, std::nullopt, false, false, true};
-  std::vector<long> disagree;
-  const Tally t = count_agreement(truth, answers, &disagree, 100, 10);
-  EXPECT_EQ(t.agree, 3);
-  EXPECT_EQ(t.pairs, 6);
-  EXPECT_EQ(t.no_answer, 1);
-  EXPECT_DOUBLE_EQ(t.rate(), 0.5);
-  EXPECT_EQ(disagree, (std::vector<long>{101, 104}));
-  std::vector<long> capped;
-  count_agreement(truth, answers, &capped, 0, 1);
-  EXPECT_EQ(capped, std::vector<long>{1});
-  EXPECT_TRUE(std::isnan(Tally{}.rate())) << "no pairs: no agreement share";
-  EXPECT_THROW(count_agreement({1}, {}, nullptr), std::invalid_argument);
-}
+std::optional<bool> always_true(const Triangle&, const Triangle&) { return true; }
+std::optional<bool> never(const Triangle&, const Triangle&) { return std::nullopt; }
+std::optional<bool> core_test(const Triangle& a, const Triangle& b) { return tri_tri_intersect(a, b); }
 
-/// A case result as tritri_case.h writes it, for two engines.
-io::Json planted_case(long intersecting, std::array<long, 3> a, std::array<long, 3> b, std::vector<long> b_disagree,
-                      double seconds) {
-  return {{"intersecting", intersecting},
-          {"engines",
-           {{{"name", "core"}, {"seconds", seconds}, {"tally", {a[0], a[1], a[2]}}, {"disagree", io::Json::array()}},
-            {{"name", "other"}, {"seconds", 2 * seconds}, {"tally", {b[0], b[1], b[2]}}, {"disagree", b_disagree}}}}};
-}
-
-TEST(TritriAgreement, CasesSumPerFamilyAndAnErrorMarksItsFamily) {
-  const auto& fams = families();  // 0 random, 1 near-coplanar, 2 coplanar, ...
-  AgreementTable table = empty_table(fams.size(), {"core", "other"});
-  add_case(table, {0, 0, 10}, fams, planted_case(4, {10, 10, 0}, {8, 10, 1}, {3}, 1e-6));
-  add_case(table, {0, 10, 5}, fams, planted_case(1, {5, 5, 0}, {4, 5, 0}, {12}, 5e-7));
-  add_case(table, {2, 0, 6}, fams, planted_case(6, {6, 6, 0}, {0, 6, 6}, {}, 1.0));
-  add_case(table, {1, 0, 3}, fams, io::Json{{"error", "case 3 threw: boom"}});
-  EXPECT_EQ(table.intersecting[0], 5);
-  EXPECT_EQ(table.tally[0][0].agree, 15);
-  EXPECT_EQ(table.tally[0][1].agree, 12);
-  EXPECT_EQ(table.tally[0][1].pairs, 15);
-  EXPECT_EQ(table.tally[0][1].no_answer, 1);
-  EXPECT_EQ(table.tally[2][1].no_answer, 6);
-  EXPECT_EQ(table.error[1], "case 3 threw: boom");
-  EXPECT_TRUE(table.error[0].empty());
-  // Time counts on the random family only: 1.5e-6 s over 15 pairs is 100 ns per pair.
-  EXPECT_NEAR(ns_per_pair(table, 0), 100.0, 1e-9);
-  EXPECT_NEAR(ns_per_pair(table, 1), 200.0, 1e-9);
-  ASSERT_EQ(table.disagree[1].size(), 2u);
-  EXPECT_EQ(table.disagree[1][1].k, 12);
-  // Found: other disagrees on 2 random pairs (15 - 12 - 1) and none of the coplanar ones answered.
-  EXPECT_EQ(disagreements_found(table), 2);
-  EXPECT_THROW(add_case(table, {0, 0, 1}, fams, io::Json{{"intersecting", 0}, {"engines", io::Json::array()}}),
-               std::runtime_error);
+TEST(TritriAgreement, ACaseTalliesEveryEngineAgainstTheReferee) {
+  const auto& fams = families();
+  const TriTriEngine referee{"exact", &core_test};
+  const std::vector<TriTriEngine> engines = {{"core", &core_test}, {"liar", &always_true}, {"mute", &never}};
+  const io::Json r = run_tritri_case(5, fams, {0, 100, 200}, referee, engines, 1000);
+  long intersecting = 0;
+  for (long k = 100; k < 300; ++k) {
+    const io::TriPair p = family_pair(5, 0, fams[0], k);
+    intersecting += tri_tri_intersect(p.a, p.b);
+  }
+  agreement::AgreementTable table = agreement::empty_table(fams.size(), {"core", "liar", "mute"});
+  agreement::add_block(table, {0, 100, 200}, true, r);
+  EXPECT_EQ(table.hits[0], intersecting);
+  EXPECT_EQ(table.tally[0][0].agree, 200);
+  EXPECT_EQ(table.tally[0][1].agree, intersecting) << "the liar agrees exactly on the intersecting pairs";
+  EXPECT_EQ(table.tally[0][1].false_hits, 200 - intersecting);
+  EXPECT_EQ(table.tally[0][1].misses, 0);
+  EXPECT_EQ(table.tally[0][2].no_answer, 200) << "no answer: neither agrees nor disagrees";
+  EXPECT_EQ(agreement::disagreements_found(table), 200 - intersecting);
+  ASSERT_EQ(table.disagree[1].size(), static_cast<std::size_t>(200 - intersecting));
+  for (const agreement::Disagreement& d : table.disagree[1]) {
+    EXPECT_GE(d.k, 100);
+    EXPECT_TRUE(d.answer.hit);
+    EXPECT_FALSE(d.truth.hit);
+  }
+  EXPECT_TRUE(std::isfinite(agreement::ns_per_case(table, 1)));
 }
 
 TEST(TritriAgreement, DisagreementFileRegeneratesThePairs) {
   const auto& fams = families();
-  AgreementTable table = empty_table(fams.size(), {"core", "other"});
-  table.disagree[1] = {{1, 0, 7}, {1, 3, 2}, {1, 3, 9}};
-  const auto pairs = disagreement_pairs(5, fams, table, 2);
+  agreement::AgreementTable table = agreement::empty_table(fams.size(), {"core", "other"});
+  table.disagree[1] = {{1, 0, 7, {}, {}}, {1, 3, 2, {}, {}}, {1, 3, 9, {}, {}}};
+  const auto pairs = agreement::disagreement_cases<io::TriPair>(
+      table, agreement::kept_disagreements(table, 2),
+      [&fams](std::size_t f, long k) { return family_pair(5, f, fams.at(f), k); });
   ASSERT_EQ(pairs.size(), 2u) << "capped";
   EXPECT_EQ(pairs[0].id, "other:random/7");
   EXPECT_EQ(pairs[1].id, "other:" + fams[3].name + "/2");
