@@ -11,12 +11,6 @@ namespace tecido::suites::obstacles {
 
 namespace {
 
-const io::Json* ok(const Results& r, const std::string& name) {
-  if (!r.contains(name)) return nullptr;
-  const io::Json& j = r.at(name);
-  return case_error(j) ? nullptr : &j;
-}
-
 std::string cell(const io::Json* run, std::size_t f) {
   if (!run || f >= run->at("frames").size()) return "-";
   const io::Json& fr = run->at("frames")[f];
@@ -24,8 +18,8 @@ std::string cell(const io::Json* run, std::size_t f) {
 }
 
 std::string direction_prose(const Settings& s, const Results& r) {
-  const io::Json* coarse = ok(r, block_name(s.block_sides[0], false));
-  const io::Json* fine = ok(r, block_name(s.block_sides[1], false));
+  const io::Json* coarse = completed_case(r, block_name(s.block_sides[0], false));
+  const io::Json* fine = completed_case(r, block_name(s.block_sides[1], false));
   if (!coarse || !fine) return "The seed's direction cannot be stated: a run is missing.\n";
   const Direction d = seed_direction(coarse->at("frames"), fine->at("frames"));
   const int nc = s.block_sides[0] * s.block_sides[0], nf = s.block_sides[1] * s.block_sides[1];
@@ -64,7 +58,7 @@ std::string block_markdown(const Settings& s, const Results& r) {
   std::string head = "| t [s] |", rule = "|---|";
   for (int n : s.block_sides)
     for (bool on : {false, true}) {
-      runs.push_back(ok(r, block_name(n, on)));
+      runs.push_back(completed_case(r, block_name(n, on)));
       head += fmt::format(" {} particles, edges {} |", n * n, on ? "on" : "off");
       rule += "---|";
     }
@@ -94,7 +88,7 @@ std::string bullet_markdown(const Settings& s, const Results& r) {
                    "height [mm] | deepest node inside [mm] | most springs through |\n|---|---|---|---|---|---|---|\n";
   std::vector<std::string> notes;
   for (const std::string& name : names) {
-    const io::Json* d = ok(r, name);
+    const io::Json* d = completed_case(r, name);
     if (!d) {
       md += fmt::format("| {} | | {} | | | | |\n", name, r.contains(name) ? *case_error(r.at(name)) : "not run");
       continue;
@@ -117,7 +111,7 @@ std::string bullet_markdown(const Settings& s, const Results& r) {
         "bisects along its integrator's sub-steps).\n\n| scene | FCL [s] | core [s] | exact [s] | FCL - core [steps] "
         "|\n|---|---|---|---|---|\n";
   for (int n : s.block_sides) {
-    const io::Json* f = ok(r, fcl_block_name(n));
+    const io::Json* f = completed_case(r, fcl_block_name(n));
     if (!f) {
       md += fmt::format("| {} | {} | | | |\n", fcl_block_name(n), r.contains(fcl_block_name(n)) ? "failed" : "not run");
       continue;

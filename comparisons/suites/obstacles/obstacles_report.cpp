@@ -8,13 +8,13 @@
 
 namespace tecido::suites::obstacles {
 
-namespace {
-
-const io::Json* ok(const Results& r, const std::string& name) {
+const io::Json* completed_case(const Results& r, const std::string& name) {
   if (!r.contains(name)) return nullptr;
   const io::Json& j = r.at(name);
   return case_error(j) ? nullptr : &j;
 }
+
+namespace {
 
 std::string err(const Results& r, const std::string& name) {
   if (!r.contains(name)) return "not run";
@@ -46,21 +46,21 @@ std::string method_markdown(const Settings& s) {
 
 std::string analytic_markdown(const Settings& s, const Results& r) {
   std::string md = "### Analytic cases\n\n| case | quantity | core | closed form |\n|---|---|---|---|\n";
-  if (const io::Json* d = ok(r, "sphere-drop")) {
+  if (const io::Json* d = completed_case(r, "sphere-drop")) {
     md += fmt::format("| sphere drop | contact time [s] | {} | {} |\n", g(*d, "t_core"), g(*d, "t_exact"));
     md += fmt::format("| sphere drop | rebound apex [m] (sampled: {}) | {} | {} |\n", g(*d, "apex_sampled"),
                       g(*d, "apex_core"), g(*d, "apex_expected"));
   }
-  if (const io::Json* d = ok(r, "slide"))
+  if (const io::Json* d = completed_case(r, "slide"))
     md += fmt::format("| slide | distance in {} s [m] (largest offset from the face {} m) | {} | {} |\n", s.slide_seconds,
                       g(*d, "max_offset"), g(*d, "distance"), g(*d, "expected"));
   for (const char* kind : {"rest/sphere", "rest/box"})
-    if (const io::Json* d = ok(r, kind))
+    if (const io::Json* d = completed_case(r, kind))
       md += fmt::format("| {} | largest offset [m], speed [m/s] over {} steps | {}, {} | 0, 0 |\n", kind, s.rest_steps,
                         g(*d, "max_offset"), g(*d, "max_speed"));
   for (const char* name : {"sphere-drop", "slide", "rest/sphere", "rest/box"})
     if (!err(r, name).empty()) md += fmt::format("| {} | {} | | |\n", name, err(r, name));
-  if (const io::Json* d = ok(r, "slide"))
+  if (const io::Json* d = completed_case(r, "slide"))
     md += fmt::format("\nThe seed's friction law scales the tangential velocity by (1 - mu) once per step, so the "
                       "slide tends to a h / mu = {} m/s, a speed that depends on the step (Coulomb friction would "
                       "give a constant deceleration); the closed form is that of the law.\n",
@@ -76,7 +76,7 @@ std::string fast_markdown(const Settings& s, const Results& r) {
                                    std::string("spinning-box")})
     for (double h : s.fast_steps) {
       const std::string name = "fast/" + scene + "/h=" + step_label(h);
-      const io::Json* d = ok(r, name);
+      const io::Json* d = completed_case(r, name);
       if (!d) {
         md += fmt::format("| {} | {} | {} | | | |\n", scene, step_label(h), err(r, name));
         continue;

@@ -13,6 +13,9 @@ namespace tecido::suites::obstacles {
 /// The case results by case name (a case that threw holds {"error": ...}).
 using Results = io::Json;
 
+/// The result of case `name` when it ran and did not throw; nullptr otherwise.
+const io::Json* completed_case(const Results& r, const std::string& name);
+
 /// What runs, from the settings.
 std::string method_markdown(const Settings& s);
 /// The analytic cases against their closed forms.
