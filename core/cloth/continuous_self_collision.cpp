@@ -1,9 +1,9 @@
 #include "core/cloth/continuous_self_collision.h"
 
 #include "core/cloth/mesh_topology.h"
-#include "core/geometry/ccd.h"
-#include "core/geometry/ccd_batch_stages.h"
-#include "core/geometry/ccd_pipeline.h"
+#include "core/geometry/ccd/ccd.h"
+#include "core/geometry/ccd/batch/stages.h"
+#include "core/geometry/ccd/pipeline.h"
 #include "core/geometry/outward_float.h"
 
 #include <algorithm>

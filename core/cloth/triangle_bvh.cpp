@@ -422,7 +422,7 @@ unsigned kinetic_row_sse2(const float (*alo)[3][4], const float (*ahi)[3][4], co
 
 // The kinetic boxes of two lanes never meet (Method): on each axis, overlap at time t is two
 // linear constraints g(t) = (1 - t) g0 + t g1 >= 0 (hi_b - lo_a and hi_a - lo_b, the kinetic
-// boxes interpolating the boxes at the frames; ccd_kinetic_boxes.h). In single precision:
+// boxes interpolating the boxes at the frames; ccd/kinetic_boxes.h). In single precision:
 //  - v0 = fl(g0): the floats' exact difference rounded once, |v0 - g0| <= 2^-24 |g0| (exact
 //    when it underflows); a = fl(v0 + m), m = fl(fl(2^-21 max(|v0|, |v1|)) + FLT_MIN), is at
 //    least g0: m >= 2^-21 max (1 - 2^-24) (the product can only lose 2^-150 to underflow, which
