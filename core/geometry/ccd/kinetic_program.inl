@@ -1,8 +1,8 @@
-/// The kinetic box test of core's continuous collision test (kinetic_boxes.h) written once over
-/// the lane type S of core's SIMD layer (core/simd/): the scalar test (kinetic_boxes.cpp)
-/// instantiates it at width 1, the batched first stages (batch/kernels.inl) at 2, 4 and 8.
-/// The 1-D linear program's early returns are lane masks: they select, they never change a
-/// value computed, so every width decides as the scalar code.
+/// The kinetic box test of core's continuous collision test (kinetic_boxes.h) over the lane type
+/// S of core's SIMD layer (core/simd/), for the batched first stages (batch/kernels.inl, widths
+/// 1, 2, 4, 8): kinetic_boxes.cpp's operations in its order, its early returns turned into lane
+/// masks (they select, they never change a value computed), so every width decides as the
+/// scalar code. The scalar test keeps its branchy form for speed (kinetic_boxes.cpp says why).
 // A per-width file (core/simd/target.h), included after core/simd/lane_math.inl. No include
 // guard, no includes, no namespace.
 

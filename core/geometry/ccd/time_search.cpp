@@ -2,6 +2,7 @@
 
 #include "core/geometry/ccd/bernstein.h"
 #include "core/geometry/ccd/coplanarity_cubic.h"
+#include "core/geometry/ccd/cubic_root.h"
 #include "core/geometry/ccd/decisions.h"
 #include "core/geometry/ccd/inclusion.h"
 #include "core/geometry/ccd/projected_quadratics.h"
@@ -137,7 +138,7 @@ class TimeSearch {
     if (!monotone_crossing<Lanes>(f, ef, s0)) return kNotApplicable;
     const double w = hi - lo, e1 = ef_.at(depth + 1);
     // The bracket below needs the root to a quarter of its smallest step, 2^-46.
-    const double tr = lo + cubic_root<Lanes>(f, std::max(0x1p-48 / w, 0x1p-52)) * w;
+    const double tr = lo + ccd_cubic_root(f, std::max(0x1p-48 / w, 0x1p-52)) * w;  // out of line: decisions.inl at width 1
     double a = 0.0, b = 0.0, sa = 0.0, sb = 0.0;
     if (!certify_bracket<Lanes>(f, tr, lo, hi, w, e1, s0, 0.25 * settings_.time_tolerance, 1u, a, b, sa, sb))
       return kNoBracket;
