@@ -2,7 +2,7 @@
 // per kind: random, small-motion random, contacts, near misses, coplanar motion, degenerate).
 // One query per iteration, cycling through the mix, so the reported time is the time per query
 // on the mix; items/s counts queries.
-//   BM_CCD/core/vertex-face, BM_CCD/core/edge-edge   core's test (core/geometry/ccd.h)
+//   BM_CCD/core/vertex-face, BM_CCD/core/edge-edge   core's test (core/geometry/ccd/ccd.h)
 //   BM_CCD/core/<kind>/<category>                    the same on one category of the mix
 //   BM_CCD/exact/<kind>, BM_CCD/fcl/<kind>           the exact referee (reference/exact_ccd.h) and
 //                                                    FCL's intersect_VF/EE (reference/fcl_adapter.h),
@@ -15,7 +15,7 @@
 // Another engine is one more line in `registered`: register_engine("fcl", &fn, false, false) gives
 // BM_CCD/fcl/vertex-face and BM_CCD/fcl/edge-edge (reference engines under TECIDO_HAVE_REFERENCE).
 #include "bench/ccd_queries.h"
-#include "core/geometry/ccd.h"
+#include "core/geometry/ccd/ccd.h"
 #ifdef TECIDO_HAVE_REFERENCE
 #include "reference/bullet_ccd.h"
 #include "reference/exact_ccd.h"

@@ -1,6 +1,6 @@
 #pragma once
 /// The fixed benchmark input for continuous collision tests: a seeded, reproducible mix of
-/// vertex-face or edge-edge queries (core/geometry/ccd_query.h), shared by the core and the
+/// vertex-face or edge-edge queries (core/geometry/ccd/query.h), shared by the core and the
 /// reference-engine benchmarks so that every engine times identical queries.
 ///
 /// Generator: std::mt19937_64, each double from the top 53 bits of one draw ((x >> 11) 2^-53,
@@ -22,7 +22,7 @@
 /// | 2/20  | degenerate    | in turn: parallel edges / zero-area triangle, a zero-length edge /    |
 /// |       |               | a vertex sliding along an edge, contact exactly at t = 0, at t = 1,   |
 /// |       |               | collinear edges / a vertex on an edge's line, all on dyadic values    |
-#include "core/geometry/ccd_query.h"
+#include "core/geometry/ccd/query.h"
 
 #include <cmath>
 #include <cstddef>

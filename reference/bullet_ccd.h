@@ -1,7 +1,7 @@
 #pragma once
 /// Bullet 3.24's vertex-face continuous collision test (engine name `bullet`) as a CcdQuery
 /// engine. Only core types cross this header; Bullet stays inside bullet_ccd.cpp.
-#include "core/geometry/ccd_query.h"
+#include "core/geometry/ccd/query.h"
 
 #include <optional>
 

@@ -1,6 +1,6 @@
 #pragma once
 /// The exact continuous-collision referee (engine name `exact`): vertex-face and edge-edge
-/// queries over linear motion (core/geometry/ccd_query.h), answered without error for any finite
+/// queries over linear motion (core/geometry/ccd/query.h), answered without error for any finite
 /// double input and for rational input given as numerator/denominator decimal integers (the
 /// form of the CCD benchmark of Wang, Ferguson, Schneider, Jiang, Attene and Panozzo, ACM TOG
 /// 2021, whose ground truth is exact symbolic computation, as here).
@@ -18,7 +18,7 @@
 /// exact. Degenerate triangles and edges are the point sets they span. In front sits a
 /// floating-point filter whose every verdict is certified (exact_ccd_filter.h).
 /// Only core types and the standard library cross this header; GMP stays inside exact_ccd.cpp.
-#include "core/geometry/ccd_query.h"
+#include "core/geometry/ccd/query.h"
 
 #include <array>
 #include <string>

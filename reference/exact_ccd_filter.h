@@ -4,7 +4,7 @@
 /// error (a running error bound, as in Shewchuk's adaptive predicates, 1997), so that a sign is
 /// used only when the bound proves it. It answers when it can prove the answer and otherwise
 /// says it cannot; the exact path then decides. Double input only, no GMP.
-#include "core/geometry/ccd_query.h"
+#include "core/geometry/ccd/query.h"
 
 #include <optional>
 

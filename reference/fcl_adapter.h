@@ -3,7 +3,7 @@
 /// segment-versus-bounded-plane engine. Only core types cross this header; FCL stays inside
 /// fcl_adapter.cpp.
 #include "core/geometry/bounded_plane.h"
-#include "core/geometry/ccd_query.h"
+#include "core/geometry/ccd/query.h"
 #include "core/geometry/segment_plane.h"
 #include "core/geometry/types.h"
 

@@ -1,7 +1,7 @@
 #include "comparisons/engines/ccd_engines.h"
 
 #include "comparisons/io/input_error.h"
-#include "core/geometry/ccd.h"
+#include "core/geometry/ccd/ccd.h"
 
 #include <stdexcept>
 #ifdef TECIDO_HAVE_REFERENCE

@@ -1,6 +1,6 @@
 #pragma once
 /// Continuous collision engines, by name: a name and a function of a CcdQuery
-/// (core/geometry/ccd_query.h) -> the answer, or nullopt when the engine cannot answer that kind
+/// (core/geometry/ccd/query.h) -> the answer, or nullopt when the engine cannot answer that kind
 /// (printed as null). Adding an engine is one adapter and one line in ccd_engines.cpp;
 /// `tecido ccd` and the ccd suite pick it up.
 ///
@@ -9,7 +9,7 @@
 /// whose rationals are not all doubles is `rounded`: a floating engine then answers a slightly
 /// different query, so its disagreements there are counted apart.
 #include "comparisons/io/ccd_queries.h"
-#include "core/geometry/ccd_query.h"
+#include "core/geometry/ccd/query.h"
 
 #include <optional>
 #include <string>
@@ -39,7 +39,7 @@ bool prepare_ccd_entry(io::CcdQueryEntry& entry);
 /// `engine`'s answer to a prepared entry: on the rationals when the entry has them and the
 /// engine answers rationals, otherwise on entry.query. nullopt also when the engine refuses the
 /// query's doubles (a rational beyond the range of doubles rounds to an infinity; FCL throws on
-/// it, core answers its conservative hit at 0, see core/geometry/ccd.h).
+/// it, core answers its conservative hit at 0, see core/geometry/ccd/ccd.h).
 std::optional<CcdAnswer> answer_ccd_entry(const CcdEngine& engine, const io::CcdQueryEntry& entry);
 
 }  // namespace tecido

@@ -2,7 +2,7 @@
 /// The input of `tecido ccd` (docs/design.md section 3, "Contracts added in the second milestone"):
 ///
 /// JSON: {"queries":[{"id":"..","kind":"vertex-face"|"edge-edge","t0":[[x,y,z]x4],"t1":[[x,y,z]x4]}]}
-///   (core/geometry/ccd_query.h: vertex-face is the vertex, then the triangle's corners; edge-edge
+///   (core/geometry/ccd/query.h: vertex-face is the vertex, then the triangle's corners; edge-edge
 ///   is a0, a1, b0, b1). Every number finite; exactly 4 points of 3 numbers; ids unique (an absent
 ///   id is the entry's index, a non-string id its JSON text); an optional boolean "truth" (the
 ///   suite's disagreement files carry the exact answer there); other keys are labels, ignored.
@@ -18,7 +18,7 @@
 /// Errors are io::InputError: the file and the JSON pointer (JSON) or "line N" (CSV).
 #include "comparisons/io/json_reader.h"
 #include "comparisons/io/limits.h"  // kMaxCcdQueries: queries in one file (JSON entries, CSV rows / 8)
-#include "core/geometry/ccd_query.h"
+#include "core/geometry/ccd/query.h"
 #include "reference/exact_ccd.h"  // RationalCcdQuery: a plain struct (no GMP; usable without the reference build)
 
 #include <cstddef>

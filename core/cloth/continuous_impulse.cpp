@@ -1,6 +1,6 @@
 #include "core/cloth/continuous_impulse.h"
 
-#include "core/geometry/ccd.h"
+#include "core/geometry/ccd/ccd.h"
 
 #include <algorithm>
 #include <cmath>

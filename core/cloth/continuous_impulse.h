@@ -5,7 +5,7 @@
 ///
 /// For one contact (vertex-face or edge-edge) between positions x0 and x1 of a check interval
 /// of length h (the particles' average velocities are (x1 - x0) / h):
-///  1. its time of impact t by core's continuous test (core/geometry/ccd.h: never after the
+///  1. its time of impact t by core's continuous test (core/geometry/ccd/ccd.h: never after the
 ///     true one), and the primitives' positions at t;
 ///  2. the contact's barycentric weights w (vertex-face: 1 on the vertex, -u, -v, -w on the
 ///     corners, (u, v, w) the vertex's projection onto the triangle, clamped into it; edge-edge:

@@ -1,17 +1,15 @@
 #include "core/cloth/continuous_self_collision.h"
 
 #include "core/cloth/mesh_topology.h"
-#include "core/geometry/ccd.h"
-#include "core/geometry/ccd_batch_stages.h"
-#include "core/geometry/ccd_pipeline.h"
+#include "core/geometry/ccd/ccd.h"
+#include "core/geometry/ccd/batch/stages.h"
+#include "core/geometry/ccd/pipeline.h"
 #include "core/geometry/outward_float.h"
+#include "core/simd/float_lanes.h"
 
 #include <algorithm>
 #include <cstdint>
 
-#if defined(__SSE2__)
-#include <emmintrin.h>
-#endif
 
 namespace tecido {
 
@@ -207,31 +205,25 @@ void ContinuousSelfCollisionDetector::flush(const std::vector<Vec3>& x0, const s
   }
 }
 
+// Boxes of four floats (x, y, z, pad), a register's worth of baseline float lanes
+// (core/simd/float_lanes.h): min and max choose as minps / maxps at every width.
 ContinuousSelfCollisionDetector::FloatBox ContinuousSelfCollisionDetector::merged(const FloatBox& a, const FloatBox& b) {
+  using F = simd::BaselineFloatLanes;
   FloatBox m;
-#if defined(__SSE2__)
-  _mm_store_ps(m.lo, _mm_min_ps(_mm_load_ps(a.lo), _mm_load_ps(b.lo)));
-  _mm_store_ps(m.hi, _mm_max_ps(_mm_load_ps(a.hi), _mm_load_ps(b.hi)));
-#else
-  for (int c = 0; c < 4; ++c) {
-    m.lo[c] = std::min(a.lo[c], b.lo[c]);
-    m.hi[c] = std::max(a.hi[c], b.hi[c]);
+  for (int c = 0; c < 4; c += F::kWidth) {
+    F::store(m.lo + c, F::min(F::load(a.lo + c), F::load(b.lo + c)));
+    F::store(m.hi + c, F::max(F::load(a.hi + c), F::load(b.hi + c)));
   }
-#endif
   return m;
 }
 
 bool ContinuousSelfCollisionDetector::overlap(const FloatBox& a, const FloatBox& b) {
   // Branch-free: the outcome is a coin toss for neighbouring features.
-#if defined(__SSE2__)
-  const __m128 o = _mm_and_ps(_mm_cmple_ps(_mm_load_ps(a.lo), _mm_load_ps(b.hi)),
-                              _mm_cmple_ps(_mm_load_ps(b.lo), _mm_load_ps(a.hi)));
-  return _mm_movemask_ps(o) == 0xF;
-#else
-  bool o = true;
-  for (int c = 0; c < 4; ++c) o &= (a.lo[c] <= b.hi[c]) & (b.lo[c] <= a.hi[c]);
-  return o;
-#endif
+  using F = simd::BaselineFloatLanes;
+  unsigned o = 0;
+  for (int c = 0; c < 4; c += F::kWidth)
+    o |= F::bits(F::kand(F::le(F::load(a.lo + c), F::load(b.hi + c)), F::le(F::load(b.lo + c), F::load(a.hi + c)))) << c;
+  return o == 0xFu;
 }
 
 void ContinuousSelfCollisionDetector::test_pair(int i, int j, const std::vector<Vec3>& x0, const std::vector<Vec3>& x1) {

@@ -2,7 +2,7 @@
 /// Continuous self-collision of one triangle mesh moving linearly between two frames: every
 /// vertex-face pair (the vertex not a corner of the face) and every edge-edge pair (edges
 /// sharing no vertex) that may touch at some time of the motion, according to a continuous
-/// collision test (default: core's, core/geometry/ccd.h: no false negatives, near misses within
+/// collision test (default: core's, core/geometry/ccd/ccd.h: no false negatives, near misses within
 /// its distance tolerance may be included). Discrete self-collision (self_collision.h) looks at
 /// one instant; a cloth can pass through itself within one step with both frames clean.
 ///
@@ -21,13 +21,13 @@
 ///    triangle's boxes contain its owned features' at every time). Feature pairs whose swept
 ///    boxes, rounded outward to floats, overlap are queued (disjoint ones ccd's stage 2 would
 ///    reject), and the first stages of core's test run on them in batches, several per SIMD
-///    register (ccd_batch_stages.h: swept and kinetic boxes, the coplanarity cubic, then the
+///    register (ccd/batch/stages.h: swept and kinetic boxes, the coplanarity cubic, then the
 ///    root of ccd's time search; bit for bit ccd's own decisions on the same numbers); the test
 ///    itself runs on the pairs they leave open, from the stage after the boxes.
 /// Output: vertex_face as (v, f), 0-based vertex and face indices, sorted; edge_edge as
 /// ((a, b), (c, d)) with a < b, c < d and (a, b) < (c, d), sorted lexicographically.
 /// Positions must be finite; both frames have the same size; no triangle repeats an index.
-#include "core/geometry/ccd_query.h"
+#include "core/geometry/ccd/query.h"
 
 #include "core/cloth/triangle_bvh.h"
 
@@ -83,7 +83,7 @@ class ContinuousSelfCollisionDetector {
   /// pairs, whose kinetic boxes it already tests.
   std::size_t last_kinetic_pairs() const { return tri_pairs_.size(); }
 
- /// The widths of core's batched first stages (core/geometry/ccd_batch_stages.h): 0 the
+ /// The widths of core's batched first stages (core/geometry/ccd/batch/stages.h): 0 the
   /// widest this CPU runs (default), or 2, 4, 8 when available. The output does not depend on
   /// it; tests compare.
   void set_simd_width(int width) { width_ = width; }
@@ -111,7 +111,7 @@ class ContinuousSelfCollisionDetector {
   /// Closed boxes overlap (touching counts).
   static bool overlap(const FloatBox& a, const FloatBox& b);
   /// Primitive pairs of one kind waiting for the batched first stages: the query's points
-  /// (ccd_query.h order) and the pair's output key, `count` of them.
+  /// (ccd/query.h order) and the pair's output key, `count` of them.
   struct Pending {
     std::array<std::array<int, 4>, 256> points;
     std::array<std::uint64_t, 256> keys;

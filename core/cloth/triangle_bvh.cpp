@@ -1,7 +1,8 @@
 #include "core/cloth/triangle_bvh.h"
 
-#include "core/platform/simd_level.h"
 #include "core/geometry/outward_float.h"
+#include "core/simd/dispatch.h"
+#include "core/simd/widths.h"
 
 #include <algorithm>
 #include <cfloat>
@@ -10,15 +11,6 @@
 #include <limits>
 #include <numeric>
 
-#if defined(__SSE2__)
-#include <emmintrin.h>
-#endif
-#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
-#define TECIDO_BVH_AVX512 1
-#include <immintrin.h>
-#else
-#define TECIDO_BVH_AVX512 0
-#endif
 
 namespace tecido {
 
@@ -34,99 +26,37 @@ static_assert(TriangleBvh::kWidth == 4, "kLaterLanes and the SSE paths assume fo
 /// Index of the lowest set bit of a nonzero mask.
 inline int lowest_bit(unsigned m) { return __builtin_ctz(m); }
 
-#if TECIDO_BVH_AVX512
-// AVX-512F has fused multiply-add, which the compiler would otherwise form in the kinetic test
-// (GCC's C++ default is -ffp-contract=fast, clang's "on"), giving other roundings than the SSE2
-// path: the build compiles with -ffp-contract=off (CMakeLists.txt), for every compiler.
-#define TECIDO_BVH_TARGET_AVX512 __attribute__((target("avx512f")))
-// The 16 lanes of a 4 x 4 mask: lane 4k + l pairs lane k of node a with lane l of node b. a's
-// row of four is repeated (k = lane / 4), b's row is tiled (l = lane % 4). (The maskz_ forms
-// with a full mask: GCC 12's plain broadcast/permutexvar trip -Wuninitialized.)
-TECIDO_BVH_TARGET_AVX512 inline __m512 tile4(const float* row) {
-  return _mm512_maskz_broadcast_f32x4(0xFFFF, _mm_loadu_ps(row));
-}
-TECIDO_BVH_TARGET_AVX512 inline __m512 repeat4(const float* row) {
-  const __m512i rep = _mm512_set_epi32(3, 3, 3, 3, 2, 2, 2, 2, 1, 1, 1, 1, 0, 0, 0, 0);
-  return _mm512_maskz_permutexvar_ps(0xFFFF, rep, tile4(row));
-}
-TECIDO_BVH_TARGET_AVX512 inline __m512i tile4(const int* row) {
-  return _mm512_maskz_broadcast_i32x4(0xFFFF, _mm_loadu_si128(reinterpret_cast<const __m128i*>(row)));
-}
-TECIDO_BVH_TARGET_AVX512 inline __m512i repeat4(const int* row) {
-  const __m512i rep = _mm512_set_epi32(3, 3, 3, 3, 2, 2, 2, 2, 1, 1, 1, 1, 0, 0, 0, 0);
-  return _mm512_maskz_permutexvar_epi32(0xFFFF, rep, tile4(row));
-}
+// The lane masks, written once (triangle_bvh_masks.inl) and compiled per width: the narrow
+// path is simd2's (SSE2, 4 lanes, part of x86-64), the wide one simd8's (AVX-512F, 16 lanes),
+// chosen at run time. The build compiles with -ffp-contract=off (CMakeLists.txt), so the
+// AVX-512 copy forms no fused multiply-add in the kinetic test and rounds as the SSE2 one.
+#define TECIDO_SIMD_KERNEL "core/cloth/triangle_bvh_masks.inl"
+#include "core/simd/for_each_width.inl"
 
-// The whole 4 x 4 lane mask of a node pair in one pass over 16 AVX-512 lanes (chosen at run
-// time; the build stays baseline x86-64), instead of four 4-lane passes. The same closed-
-// interval compares as the SSE2 path, so the mask, and hence the output, is identical
-// whichever path runs. lo and hi point at a node's lo[3][4] / hi[3][4] rows.
-TECIDO_BVH_TARGET_AVX512 unsigned box_mask16_avx512(const float* alo, const float* ahi, const float* blo,
-                                                    const float* bhi) {
-  __mmask16 m = 0xFFFF;
-  for (int d = 0; d < 3; ++d) {
-    m = _mm512_mask_cmp_ps_mask(m, tile4(blo + 4 * d), repeat4(ahi + 4 * d), _CMP_LE_OQ);
-    m = _mm512_mask_cmp_ps_mask(m, repeat4(alo + 4 * d), tile4(bhi + 4 * d), _CMP_LE_OQ);
-  }
-  return m;
-}
+using Narrow = simd2::FloatLanes;
 
-/// The same for two leaves, with the pairs that share a vertex removed: av and bv point at
-/// the leaves' v[3][4] vertex-id rows (nine equality tests per lane).
-TECIDO_BVH_TARGET_AVX512 unsigned leaf_mask16_avx512(const float* alo, const float* ahi, const float* blo,
-                                                     const float* bhi, const int* av, const int* bv) {
-  const __m512i b0 = tile4(bv), b1 = tile4(bv + 4), b2 = tile4(bv + 8);
-  __mmask16 share = 0;
-  for (int d = 0; d < 3; ++d) {
-    const __m512i a = repeat4(av + 4 * d);
-    share = static_cast<__mmask16>(share | _mm512_cmpeq_epi32_mask(a, b0) | _mm512_cmpeq_epi32_mask(a, b1) |
-                                   _mm512_cmpeq_epi32_mask(a, b2));
-  }
-  return box_mask16_avx512(alo, ahi, blo, bhi) & ~static_cast<unsigned>(share) & 0xFFFFu;
-}
-
-/// kinetic_lanes on the 16 lane pairs at once (the same operations lane by lane as
-/// kinetic_row_sse2 below; see kinetic_lanes for the method). a and b point at Frames lo/hi.
-TECIDO_BVH_TARGET_AVX512 unsigned kinetic_mask16_avx512(const float* alo, const float* ahi, const float* blo,
-                                                         const float* bhi) {
-  const __m512 zero = _mm512_setzero_ps();
-  __m512 lower = zero, upper = _mm512_set1_ps(1.0f);
-  __mmask16 reject = 0;
-  for (int c = 0; c < 3; ++c) {
-    for (int k = 0; k < 2; ++k) {
-      // Constraint k of axis c at frame f: hi_b - lo_a (k = 0) or hi_a - lo_b (k = 1).
-      __m512 v[2];
-      for (int f = 0; f < 2; ++f) {
-        const int row = 12 * f + 4 * c;
-        v[f] = k == 0 ? _mm512_sub_ps(tile4(bhi + row), repeat4(alo + row)) : _mm512_sub_ps(repeat4(ahi + row), tile4(blo + row));
-      }
-      const __m512 m = _mm512_add_ps(_mm512_mul_ps(_mm512_maskz_max_ps(0xFFFF, _mm512_abs_ps(v[0]), _mm512_abs_ps(v[1])),
-                                                   _mm512_set1_ps(0x1p-21f)), _mm512_set1_ps(FLT_MIN));
-      const __m512 a = _mm512_add_ps(v[0], m), e = _mm512_add_ps(v[1], m);
-      const __mmask16 rising = _mm512_cmp_ps_mask(a, zero, _CMP_LT_OQ), e_neg = _mm512_cmp_ps_mask(e, zero, _CMP_LT_OQ);
-      reject = static_cast<__mmask16>(reject | (rising & e_neg));
-      const __mmask16 falling = static_cast<__mmask16>(~rising & e_neg);
-      const __m512 t = _mm512_div_ps(a, _mm512_sub_ps(a, e));
-      const __m512 lo = _mm512_sub_ps(_mm512_mul_ps(t, _mm512_set1_ps(1.0f - 0x1p-20f)), _mm512_set1_ps(0x1p-100f));
-      const __m512 hi = _mm512_add_ps(_mm512_mul_ps(t, _mm512_set1_ps(1.0f + 0x1p-20f)), _mm512_set1_ps(0x1p-100f));
-      lower = _mm512_mask_max_ps(lower, rising, lower, lo);
-      upper = _mm512_mask_min_ps(upper, falling, upper, hi);
-    }
-  }
-  const __mmask16 disjoint = static_cast<__mmask16>(reject | _mm512_cmp_ps_mask(lower, upper, _CMP_GT_OQ));
-  return ~static_cast<unsigned>(disjoint) & 0xFFFFu;
-}
+unsigned box_mask(const float* alo, const float* ahi, const float* blo, const float* bhi, bool wide) {
+#if TECIDO_SIMD_X86
+  if (wide) return simd8::box_mask16<simd8::FloatLanes>(alo, ahi, blo, bhi);
 #endif
+  (void)wide;
+  return simd2::box_mask16<Narrow>(alo, ahi, blo, bhi);
+}
+
+unsigned leaf_mask(const float* alo, const float* ahi, const float* blo, const float* bhi, const int* av,
+                   const int* bv, bool wide) {
+#if TECIDO_SIMD_X86
+  if (wide) return simd8::leaf_mask16<simd8::FloatLanes>(alo, ahi, blo, bhi, av, bv);
+#endif
+  (void)wide;
+  return simd2::leaf_mask16<Narrow>(alo, ahi, blo, bhi, av, bv);
+}
 
 }  // namespace
 
 bool TriangleBvh::wide_kernel_available() {
-#if TECIDO_BVH_AVX512
-  static const bool ok = simd_level_allowed(SimdLevel::AVX512);  // the CPU has it and TECIDO_SIMD allows it
+  static const bool ok = simd::width_available(8);  // the CPU has AVX-512F and TECIDO_SIMD allows it
   return ok;
-#else
-  return false;
-#endif
 }
 
 void TriangleBvh::build(const std::vector<Vec3>& x, const std::vector<std::array<int, 3>>& triangles) {
@@ -343,86 +273,16 @@ void TriangleBvh::refit_from_vertex_bounds() {
 }
 
 unsigned TriangleBvh::lanes_overlapping(const Node& b, const float lo[3], const float hi[3]) {
-#if defined(__SSE2__)
-  __m128 m = _mm_and_ps(_mm_cmple_ps(_mm_loadu_ps(b.lo[0]), _mm_set1_ps(hi[0])),
-                        _mm_cmple_ps(_mm_set1_ps(lo[0]), _mm_loadu_ps(b.hi[0])));
-  m = _mm_and_ps(m, _mm_cmple_ps(_mm_loadu_ps(b.lo[1]), _mm_set1_ps(hi[1])));
-  m = _mm_and_ps(m, _mm_cmple_ps(_mm_set1_ps(lo[1]), _mm_loadu_ps(b.hi[1])));
-  m = _mm_and_ps(m, _mm_cmple_ps(_mm_loadu_ps(b.lo[2]), _mm_set1_ps(hi[2])));
-  m = _mm_and_ps(m, _mm_cmple_ps(_mm_set1_ps(lo[2]), _mm_loadu_ps(b.hi[2])));
-  return static_cast<unsigned>(_mm_movemask_ps(m));
-#else
-  unsigned m = 0;
-  for (int k = 0; k < kWidth; ++k) {
-    const bool o = (b.lo[0][k] <= hi[0]) & (lo[0] <= b.hi[0][k]) & (b.lo[1][k] <= hi[1]) & (lo[1] <= b.hi[1][k]) &
-                   (b.lo[2][k] <= hi[2]) & (lo[2] <= b.hi[2][k]);
-    m |= static_cast<unsigned>(o) << k;
-  }
-  return m;
-#endif
+  return simd2::lanes_overlapping<Narrow>(b.lo[0], b.hi[0], lo, hi);
 }
 
 unsigned TriangleBvh::lanes_sharing(const LeafVerts& b, int v0, int v1, int v2) {
-#if defined(__SSE2__)
-  const __m128i l0 = _mm_loadu_si128(reinterpret_cast<const __m128i*>(b.v[0]));
-  const __m128i l1 = _mm_loadu_si128(reinterpret_cast<const __m128i*>(b.v[1]));
-  const __m128i l2 = _mm_loadu_si128(reinterpret_cast<const __m128i*>(b.v[2]));
-  __m128i s = _mm_setzero_si128();
-  for (int v : {v0, v1, v2}) {
-    const __m128i q = _mm_set1_epi32(v);
-    s = _mm_or_si128(s, _mm_or_si128(_mm_cmpeq_epi32(q, l0), _mm_or_si128(_mm_cmpeq_epi32(q, l1), _mm_cmpeq_epi32(q, l2))));
-  }
-  return static_cast<unsigned>(_mm_movemask_ps(_mm_castsi128_ps(s)));
-#else
-  unsigned m = 0;
-  for (int k = 0; k < kWidth; ++k) {
-    const int a = b.v[0][k], c = b.v[1][k], e = b.v[2][k];
-    const bool s = (v0 == a) | (v0 == c) | (v0 == e) | (v1 == a) | (v1 == c) | (v1 == e) | (v2 == a) | (v2 == c) |
-                   (v2 == e);
-    m |= static_cast<unsigned>(s) << k;
-  }
-  return m;
-#endif
+  return simd2::lanes_sharing<Narrow>(b.v[0], v0, v1, v2);
 }
-
-namespace {
-
-#if defined(__SSE2__)
-/// kinetic_lanes for lane k of a against the four lanes of b: bit l set when they may meet.
-unsigned kinetic_row_sse2(const float (*alo)[3][4], const float (*ahi)[3][4], const float (*blo)[3][4],
-                          const float (*bhi)[3][4], int k) {
-  const __m128 zero = _mm_setzero_ps(), sign = _mm_set1_ps(-0.0f);
-  __m128 lower = zero, upper = _mm_set1_ps(1.0f), reject = zero;
-  for (int c = 0; c < 3; ++c) {
-    for (int j = 0; j < 2; ++j) {
-      __m128 v[2];
-      for (int f = 0; f < 2; ++f) {
-        v[f] = j == 0 ? _mm_sub_ps(_mm_loadu_ps(bhi[f][c]), _mm_set1_ps(alo[f][c][k]))
-                      : _mm_sub_ps(_mm_set1_ps(ahi[f][c][k]), _mm_loadu_ps(blo[f][c]));
-      }
-      const __m128 m = _mm_add_ps(_mm_mul_ps(_mm_max_ps(_mm_andnot_ps(sign, v[0]), _mm_andnot_ps(sign, v[1])),
-                                             _mm_set1_ps(0x1p-21f)), _mm_set1_ps(FLT_MIN));
-      const __m128 a = _mm_add_ps(v[0], m), e = _mm_add_ps(v[1], m);
-      const __m128 rising = _mm_cmplt_ps(a, zero), e_neg = _mm_cmplt_ps(e, zero);
-      reject = _mm_or_ps(reject, _mm_and_ps(rising, e_neg));
-      const __m128 falling = _mm_andnot_ps(rising, e_neg);
-      const __m128 t = _mm_div_ps(a, _mm_sub_ps(a, e));
-      const __m128 lo = _mm_sub_ps(_mm_mul_ps(t, _mm_set1_ps(1.0f - 0x1p-20f)), _mm_set1_ps(0x1p-100f));
-      const __m128 hi = _mm_add_ps(_mm_mul_ps(t, _mm_set1_ps(1.0f + 0x1p-20f)), _mm_set1_ps(0x1p-100f));
-      lower = _mm_or_ps(_mm_and_ps(rising, _mm_max_ps(lower, lo)), _mm_andnot_ps(rising, lower));
-      upper = _mm_or_ps(_mm_and_ps(falling, _mm_min_ps(upper, hi)), _mm_andnot_ps(falling, upper));
-    }
-  }
-  const __m128 disjoint = _mm_or_ps(reject, _mm_cmpgt_ps(lower, upper));
-  return ~static_cast<unsigned>(_mm_movemask_ps(disjoint)) & 0xFu;
-}
-#endif
-
-}  // namespace
 
 // The kinetic boxes of two lanes never meet (Method): on each axis, overlap at time t is two
 // linear constraints g(t) = (1 - t) g0 + t g1 >= 0 (hi_b - lo_a and hi_a - lo_b, the kinetic
-// boxes interpolating the boxes at the frames; ccd_kinetic_boxes.h). In single precision:
+// boxes interpolating the boxes at the frames; ccd/kinetic_boxes.h). In single precision:
 //  - v0 = fl(g0): the floats' exact difference rounded once, |v0 - g0| <= 2^-24 |g0| (exact
 //    when it underflows); a = fl(v0 + m), m = fl(fl(2^-21 max(|v0|, |v1|)) + FLT_MIN), is at
 //    least g0: m >= 2^-21 max (1 - 2^-24) (the product can only lose 2^-150 to underflow, which
@@ -439,20 +299,11 @@ unsigned kinetic_row_sse2(const float (*alo)[3][4], const float (*ahi)[3][4], co
 //    (boxes near FLT_MAX, empty lanes) makes a comparison false, which never rejects.
 // The SSE2 and AVX-512 paths run the same operations lane by lane: the same mask.
 unsigned TriangleBvh::kinetic_lanes(const Frames& a, const Frames& b, bool wide) {
-#if TECIDO_BVH_AVX512
-  if (wide) return kinetic_mask16_avx512(&a.lo[0][0][0], &a.hi[0][0][0], &b.lo[0][0][0], &b.hi[0][0][0]);
-#else
+#if TECIDO_SIMD_X86
+  if (wide) return simd8::kinetic_mask16<simd8::FloatLanes>(&a.lo[0][0][0], &a.hi[0][0][0], &b.lo[0][0][0], &b.hi[0][0][0]);
+#endif
   (void)wide;
-#endif
-#if defined(__SSE2__)
-  unsigned m = 0;
-  for (int k = 0; k < kWidth; ++k) m |= kinetic_row_sse2(a.lo, a.hi, b.lo, b.hi, k) << (kWidth * k);
-  return m;
-#else
-  (void)a;
-  (void)b;
-  return 0xFFFFu;  // no single-precision test without SSE: every pair may meet
-#endif
+  return simd2::kinetic_mask16<Narrow>(&a.lo[0][0][0], &a.hi[0][0][0], &b.lo[0][0][0], &b.hi[0][0][0]);
 }
 
 unsigned TriangleBvh::kinetic_if_apart(const Frames& a, const Frames& b, unsigned lanes, bool wide) {
@@ -460,14 +311,12 @@ unsigned TriangleBvh::kinetic_if_apart(const Frames& a, const Frames& b, unsigne
   // nonnegative at that end: no bound on t from the other), so when no lane of `lanes` is
   // apart at both frames the answer is `lanes` without it. A speed choice of the wide path
   // (two 16-lane compares); the mask is the same either way.
-  unsigned apart = lanes;
-#if TECIDO_BVH_AVX512
   if (wide) {
-    apart &= ~box_mask16_avx512(a.lo[0][0], a.hi[0][0], b.lo[0][0], b.hi[0][0]);
-    apart &= ~box_mask16_avx512(a.lo[1][0], a.hi[1][0], b.lo[1][0], b.hi[1][0]);
+    unsigned apart = lanes;
+    apart &= ~box_mask(a.lo[0][0], a.hi[0][0], b.lo[0][0], b.hi[0][0], wide);
+    apart &= ~box_mask(a.lo[1][0], a.hi[1][0], b.lo[1][0], b.hi[1][0], wide);
     return apart ? (lanes & ~apart) | (apart & kinetic_lanes(a, b, wide)) : lanes;
   }
-#endif
   return lanes & kinetic_lanes(a, b, wide);
 }
 
@@ -479,20 +328,7 @@ inline void TriangleBvh::leaf_pairs(int a, int b, bool wide, std::vector<std::ar
   const LeafVerts& lb = nb.lv;
   // A 16-bit mask, bit 4k + l for lane k of a and lane l of b, built without branches; then
   // one loop over its (few) set bits. Unused lanes have empty boxes and never overlap.
-  unsigned mask = 0;
-#if TECIDO_BVH_AVX512
-  if (wide) {
-    mask = leaf_mask16_avx512(na.lo[0], na.hi[0], nb.lo[0], nb.hi[0], la.v[0], lb.v[0]);
-  } else
-#endif
-  {
-    for (int k = 0; k < kWidth; ++k) {
-      const float lo[3] = {na.lo[0][k], na.lo[1][k], na.lo[2][k]};
-      const float hi[3] = {na.hi[0][k], na.hi[1][k], na.hi[2][k]};
-      const unsigned m = lanes_overlapping(nb, lo, hi) & ~lanes_sharing(lb, la.v[0][k], la.v[1][k], la.v[2][k]);
-      mask |= m << (kWidth * k);
-    }
-  }
+  unsigned mask = leaf_mask(na.lo[0], na.hi[0], nb.lo[0], nb.hi[0], la.v[0], lb.v[0], wide);
   if (a == b) mask &= kLaterLanes;
   if (Kinetic && mask) mask &= kinetic_lanes(frames_[a], frames_[b], wide);
   for (; mask; mask &= mask - 1) {
@@ -549,19 +385,7 @@ void TriangleBvh::pairs(std::vector<std::array<int, 2>>& out) {
       // The children (contiguous records) are about to be read: start fetching them now.
       prefetch_children(na);
       if (a != b) prefetch_children(nb);
-      unsigned mask = 0;
-#if TECIDO_BVH_AVX512
-      if (wide) {
-        mask = box_mask16_avx512(na.lo[0], na.hi[0], nb.lo[0], nb.hi[0]);
-      } else
-#endif
-      {
-        for (int k = 0; k < kWidth; ++k) {
-          const float lo[3] = {na.lo[0][k], na.lo[1][k], na.lo[2][k]};
-          const float hi[3] = {na.hi[0][k], na.hi[1][k], na.hi[2][k]};
-          mask |= lanes_overlapping(nb, lo, hi) << (kWidth * k);
-        }
-      }
+      unsigned mask = box_mask(na.lo[0], na.hi[0], nb.lo[0], nb.hi[0], wide);
       if (Kinetic && mask) mask &= kinetic_if_apart(frames_[a], frames_[b], mask, wide);
       if (a == b) {
         mask &= kLaterLanes;

@@ -57,7 +57,7 @@ class TriangleBvh {
 
   /// After the two-frame refit: the pairs of overlapping_pairs() less those whose kinetic
   /// boxes never meet (the boxes at t = 0 and t = 1 interpolated in time, as in
-  /// core/geometry/ccd_kinetic_boxes.h; each triangle lies in its kinetic box at every time,
+  /// core/geometry/ccd/kinetic_boxes.h; each triangle lies in its kinetic box at every time,
   /// so such a pair cannot touch), decided by a certified test in single precision
   /// (kinetic_lanes in triangle_bvh.cpp) on the lanes of leaf pairs and of internal node
   /// pairs (a node's boxes at each frame contain its triangles'). In the same order.

@@ -1,6 +1,6 @@
 #include "core/dynamics/edge_contacts.h"
 
-#include "core/geometry/ccd.h"
+#include "core/geometry/ccd/ccd.h"
 #include "core/geometry/closest_points.h"
 #include "core/geometry/mesh_edges.h"
 #include "core/geometry/obstacle_pose.h"

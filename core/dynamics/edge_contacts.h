@@ -6,7 +6,7 @@
 /// every (spring, edge) pair the engine remembers on which side of the edge's line the spring's
 /// line passes (exact: orient3d_sign(x_i, x_j, e0, e1)), as for planes; over an interval of the
 /// contact loop a pair is tested when the spring does not end strictly on that side (and their
-/// swept boxes meet), by core's continuous edge-edge test (ccd.h, zero false negatives) with the
+/// swept boxes meet), by core's continuous edge-edge test (ccd/ccd.h, zero false negatives) with the
 /// spring's ends moving x0 -> x1 and the edge from its start to its end pose. A side changes
 /// without a contact only when the lines passed each other beyond the segments' ends.
 ///

@@ -1,6 +1,6 @@
 #include "core/dynamics/mesh_obstacle_contacts.h"
 
-#include "core/geometry/ccd.h"
+#include "core/geometry/ccd/ccd.h"
 #include "core/geometry/orient_predicates.h"
 
 #include <algorithm>

@@ -4,7 +4,7 @@
 /// and the particle remembers which side of each triangle's plane it is on. Sides are exact:
 /// orient3d_sign (orient_predicates.h) of the triangle's corners and the point. A triangle is
 /// tested only when the particle does not end the interval strictly on its remembered side; then
-/// core's continuous vertex-face test (ccd.h: zero false negatives) of the particle's segment
+/// core's continuous vertex-face test (ccd/ccd.h: zero false negatives) of the particle's segment
 /// against the triangle moving linearly from its start to its end pose decides, and gives the
 /// time. Swept boxes (the mesh's, then the triangle's) reject far pairs first.
 #include "core/geometry/obstacle_pose.h"

@@ -5,7 +5,7 @@
 /// from its pose at t0 to its pose at t1; the tests are continuous over that motion:
 ///  - sphere: the segment relative to the centre against the open ball (segment_sphere.h);
 ///  - box: the segment in the box's frame against the open box (segment_box.h);
-///  - mesh: core's continuous vertex-face test (ccd.h) of the particle against each moving
+///  - mesh: core's continuous vertex-face test (ccd/ccd.h) of the particle against each moving
 ///    triangle, with the side of each triangle's plane remembered per (particle, triangle), as
 ///    for two-sided planes: a triangle is only tested when the particle does not end strictly on
 ///    its remembered side, and a side changes without a contact only when the particle went round

@@ -5,24 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
-#if defined(__GNUC__) && defined(__x86_64__)
-#define TECIDO_SPRING_X86 1
-#include <immintrin.h>
-// AVX has no fused multiply-add; AVX-512F does, and GCC would contract a*b + c in such a
-// function (-ffp-contract=fast is its default), changing the rounding: switch it off there.
-// (Clang's default only fuses within one source expression, never across intrinsic calls.)
-#if defined(__clang__)
-#define TECIDO_TARGET_AVX __attribute__((target("avx")))
-#define TECIDO_TARGET_AVX512 __attribute__((target("avx512f")))
-#else
-#define TECIDO_TARGET_AVX __attribute__((target("avx")))
-#define TECIDO_TARGET_AVX512 __attribute__((target("avx512f"), optimize("fp-contract=off")))
-#endif
-#define TECIDO_INLINE inline __attribute__((always_inline))
-#else
-#define TECIDO_SPRING_X86 0
-#define TECIDO_INLINE inline
-#endif
+#include "core/simd/widths.h"
 
 namespace tecido {
 
@@ -42,7 +25,7 @@ bool spring_kernel_supported(SpringKernel k) {
   // The CPU has it and TECIDO_SIMD allows it (core/platform/simd_level.h).
   switch (k) {
     case SpringKernel::Scalar: return true;
-#if TECIDO_SPRING_X86
+#if TECIDO_SIMD_X86
     case SpringKernel::SSE2: return simd_level_allowed(SimdLevel::SSE2);
     case SpringKernel::AVX: return simd_level_allowed(SimdLevel::AVX);
     case SpringKernel::AVX512: return simd_level_allowed(SimdLevel::AVX512);
@@ -75,34 +58,13 @@ struct Block {
 // Pass 1 for springs k .. m-1, the reference form of every vector kernel below:
 // f = (ks (len - l) [+ c (dv . d) / len]) / len * d, exactly the plain loop's operations in its
 // order (force_model.cpp); a spring with len <= 0 or NaN contributes 0.
-template <bool Damped>
-TECIDO_INLINE void pass1_scalar(const Block& p, int k) {
-  for (; k < p.m; ++k) {
-    const double dx = p.xb[k] - p.xa[k], dy = p.yb[k] - p.ya[k], dz = p.zb[k] - p.za[k];
-    const double len = std::sqrt((dx * dx + dy * dy) + dz * dz);
-    const double inv_len = 1.0 / len;
-    double mag = p.ks[k] * (len - p.ls[k]);
-    if constexpr (Damped) {
-      const double dvx = p.vxb[k] - p.vxa[k], dvy = p.vyb[k] - p.vya[k], dvz = p.vzb[k] - p.vza[k];
-      mag += p.cs[k] * ((dvx * dx + dvy * dy) + dvz * dz) * inv_len;
-    }
-    const double c = mag * inv_len;
-    const bool ok = len > 0.0;
-    p.gx[k] = ok ? c * dx : 0.0;
-    p.gy[k] = ok ? c * dy : 0.0;
-    p.gz[k] = ok ? c * dz : 0.0;
-  }
-}
-
-// Pass 2: scatter in the plain loop's per-particle order (see the header). Stride-1 loops
-// over distinct arrays, so the compiler vectorizes them (with the caller's instruction set).
-TECIDO_INLINE void add_to(double* __restrict f, const double* __restrict g, int m) {
+TECIDO_SIMD_INLINE void add_to(double* __restrict f, const double* __restrict g, int m) {
   for (int q = 0; q < m; ++q) f[q] += g[q];
 }
-TECIDO_INLINE void subtract_from(double* __restrict f, const double* __restrict g, int m) {
+TECIDO_SIMD_INLINE void subtract_from(double* __restrict f, const double* __restrict g, int m) {
   for (int q = 0; q < m; ++q) f[q] -= g[q];
 }
-TECIDO_INLINE void pass2(const Block& p) {
+TECIDO_SIMD_INLINE void pass2(const Block& p) {
   if (p.subtract_first) {
     subtract_from(p.fxb, p.gx, p.m);
     subtract_from(p.fyb, p.gy, p.m);
@@ -118,131 +80,11 @@ TECIDO_INLINE void pass2(const Block& p) {
   }
 }
 
-template <bool Damped>
-void block_scalar(const Block& p) {
-  pass1_scalar<Damped>(p, 0);
-  pass2(p);
-}
-
-#if TECIDO_SPRING_X86
-// pass1_scalar, two springs per instruction. Written out because GCC does not vectorize
-// std::sqrt without -fno-math-errno.
-template <bool Damped>
-void block_sse2(const Block& block) {
-  const Block p = block;  // local copy: no store below can alias it, so its pointers stay in registers
-  const __m128d zero = _mm_setzero_pd(), one = _mm_set1_pd(1.0);
-  // Groups of 2 springs from k = 0; pass 1 is pure, so the last group may overlap the one
-  // before it (it rewrites the same values) instead of leaving a scalar tail.
-  if (p.m >= 2) {
-    for (int k = 0;; k = std::min(k + 2, p.m - 2)) {
-      const __m128d dx = _mm_sub_pd(_mm_loadu_pd(p.xb + k), _mm_loadu_pd(p.xa + k));
-      const __m128d dy = _mm_sub_pd(_mm_loadu_pd(p.yb + k), _mm_loadu_pd(p.ya + k));
-      const __m128d dz = _mm_sub_pd(_mm_loadu_pd(p.zb + k), _mm_loadu_pd(p.za + k));
-      const __m128d len = _mm_sqrt_pd(_mm_add_pd(_mm_add_pd(_mm_mul_pd(dx, dx), _mm_mul_pd(dy, dy)), _mm_mul_pd(dz, dz)));
-      const __m128d inv_len = _mm_div_pd(one, len);
-      __m128d mag = _mm_mul_pd(_mm_loadu_pd(p.ks + k), _mm_sub_pd(len, _mm_loadu_pd(p.ls + k)));
-      if constexpr (Damped) {
-        const __m128d dvx = _mm_sub_pd(_mm_loadu_pd(p.vxb + k), _mm_loadu_pd(p.vxa + k));
-        const __m128d dvy = _mm_sub_pd(_mm_loadu_pd(p.vyb + k), _mm_loadu_pd(p.vya + k));
-        const __m128d dvz = _mm_sub_pd(_mm_loadu_pd(p.vzb + k), _mm_loadu_pd(p.vza + k));
-        const __m128d dot = _mm_add_pd(_mm_add_pd(_mm_mul_pd(dvx, dx), _mm_mul_pd(dvy, dy)), _mm_mul_pd(dvz, dz));
-        mag = _mm_add_pd(mag, _mm_mul_pd(_mm_mul_pd(_mm_loadu_pd(p.cs + k), dot), inv_len));
-      }
-      const __m128d c = _mm_mul_pd(mag, inv_len);
-      const __m128d ok = _mm_cmpgt_pd(len, zero);  // all ones where len > 0; zero otherwise and for NaN
-      _mm_storeu_pd(p.gx + k, _mm_and_pd(ok, _mm_mul_pd(c, dx)));
-      _mm_storeu_pd(p.gy + k, _mm_and_pd(ok, _mm_mul_pd(c, dy)));
-      _mm_storeu_pd(p.gz + k, _mm_and_pd(ok, _mm_mul_pd(c, dz)));
-      if (k + 2 == p.m) break;
-    }
-  } else {
-    pass1_scalar<Damped>(p, 0);
-  }
-  pass2(p);
-}
-
-// The same, four springs per instruction.
-template <bool Damped>
-TECIDO_TARGET_AVX void block_avx(const Block& block) {
-  const Block p = block;  // local copy: no store below can alias it, so its pointers stay in registers
-  const __m256d zero = _mm256_setzero_pd(), one = _mm256_set1_pd(1.0);
-  // Groups of 4 springs from k = 0; pass 1 is pure, so the last group may overlap the one
-  // before it (it rewrites the same values) instead of leaving a scalar tail.
-  if (p.m >= 4) {
-    for (int k = 0;; k = std::min(k + 4, p.m - 4)) {
-      const __m256d dx = _mm256_sub_pd(_mm256_loadu_pd(p.xb + k), _mm256_loadu_pd(p.xa + k));
-      const __m256d dy = _mm256_sub_pd(_mm256_loadu_pd(p.yb + k), _mm256_loadu_pd(p.ya + k));
-      const __m256d dz = _mm256_sub_pd(_mm256_loadu_pd(p.zb + k), _mm256_loadu_pd(p.za + k));
-      const __m256d len =
-          _mm256_sqrt_pd(_mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(dx, dx), _mm256_mul_pd(dy, dy)), _mm256_mul_pd(dz, dz)));
-      const __m256d inv_len = _mm256_div_pd(one, len);
-      __m256d mag = _mm256_mul_pd(_mm256_loadu_pd(p.ks + k), _mm256_sub_pd(len, _mm256_loadu_pd(p.ls + k)));
-      if constexpr (Damped) {
-        const __m256d dvx = _mm256_sub_pd(_mm256_loadu_pd(p.vxb + k), _mm256_loadu_pd(p.vxa + k));
-        const __m256d dvy = _mm256_sub_pd(_mm256_loadu_pd(p.vyb + k), _mm256_loadu_pd(p.vya + k));
-        const __m256d dvz = _mm256_sub_pd(_mm256_loadu_pd(p.vzb + k), _mm256_loadu_pd(p.vza + k));
-        const __m256d dot =
-            _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(dvx, dx), _mm256_mul_pd(dvy, dy)), _mm256_mul_pd(dvz, dz));
-        mag = _mm256_add_pd(mag, _mm256_mul_pd(_mm256_mul_pd(_mm256_loadu_pd(p.cs + k), dot), inv_len));
-      }
-      const __m256d c = _mm256_mul_pd(mag, inv_len);
-      const __m256d ok = _mm256_cmp_pd(len, zero, _CMP_GT_OQ);
-      _mm256_storeu_pd(p.gx + k, _mm256_and_pd(ok, _mm256_mul_pd(c, dx)));
-      _mm256_storeu_pd(p.gy + k, _mm256_and_pd(ok, _mm256_mul_pd(c, dy)));
-      _mm256_storeu_pd(p.gz + k, _mm256_and_pd(ok, _mm256_mul_pd(c, dz)));
-      if (k + 4 == p.m) break;
-    }
-  } else {
-    pass1_scalar<Damped>(p, 0);
-  }
-  pass2(p);
-}
-
-// The same, eight springs per instruction (lanes with len <= 0 or NaN are zeroed by the mask).
-// GCC 12 warns falsely about _mm512_undefined_pd inside _mm512_sqrt_pd (-Wmaybe-uninitialized).
-#if !defined(__clang__)
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
-#endif
-template <bool Damped>
-TECIDO_TARGET_AVX512 void block_avx512(const Block& block) {
-  const Block p = block;  // local copy: no store below can alias it, so its pointers stay in registers
-  const __m512d zero = _mm512_setzero_pd(), one = _mm512_set1_pd(1.0);
-  // Groups of 8 springs from k = 0; pass 1 is pure, so the last group may overlap the one
-  // before it (it rewrites the same values) instead of leaving a scalar tail.
-  if (p.m >= 8) {
-    for (int k = 0;; k = std::min(k + 8, p.m - 8)) {
-      const __m512d dx = _mm512_sub_pd(_mm512_loadu_pd(p.xb + k), _mm512_loadu_pd(p.xa + k));
-      const __m512d dy = _mm512_sub_pd(_mm512_loadu_pd(p.yb + k), _mm512_loadu_pd(p.ya + k));
-      const __m512d dz = _mm512_sub_pd(_mm512_loadu_pd(p.zb + k), _mm512_loadu_pd(p.za + k));
-      const __m512d len =
-          _mm512_sqrt_pd(_mm512_add_pd(_mm512_add_pd(_mm512_mul_pd(dx, dx), _mm512_mul_pd(dy, dy)), _mm512_mul_pd(dz, dz)));
-      const __m512d inv_len = _mm512_div_pd(one, len);
-      __m512d mag = _mm512_mul_pd(_mm512_loadu_pd(p.ks + k), _mm512_sub_pd(len, _mm512_loadu_pd(p.ls + k)));
-      if constexpr (Damped) {
-        const __m512d dvx = _mm512_sub_pd(_mm512_loadu_pd(p.vxb + k), _mm512_loadu_pd(p.vxa + k));
-        const __m512d dvy = _mm512_sub_pd(_mm512_loadu_pd(p.vyb + k), _mm512_loadu_pd(p.vya + k));
-        const __m512d dvz = _mm512_sub_pd(_mm512_loadu_pd(p.vzb + k), _mm512_loadu_pd(p.vza + k));
-        const __m512d dot =
-            _mm512_add_pd(_mm512_add_pd(_mm512_mul_pd(dvx, dx), _mm512_mul_pd(dvy, dy)), _mm512_mul_pd(dvz, dz));
-        mag = _mm512_add_pd(mag, _mm512_mul_pd(_mm512_mul_pd(_mm512_loadu_pd(p.cs + k), dot), inv_len));
-      }
-      const __m512d c = _mm512_mul_pd(mag, inv_len);
-      const __mmask8 ok = _mm512_cmp_pd_mask(len, zero, _CMP_GT_OQ);
-      _mm512_storeu_pd(p.gx + k, _mm512_maskz_mul_pd(ok, c, dx));
-      _mm512_storeu_pd(p.gy + k, _mm512_maskz_mul_pd(ok, c, dy));
-      _mm512_storeu_pd(p.gz + k, _mm512_maskz_mul_pd(ok, c, dz));
-      if (k + 8 == p.m) break;
-    }
-  } else {
-    pass1_scalar<Damped>(p, 0);
-  }
-  pass2(p);
-}
-#if !defined(__clang__)
-#pragma GCC diagnostic pop
-#endif
-#endif
+// The block kernel, written once (spring_block.inl) and compiled per width (scalar, SSE2, AVX,
+// AVX-512F); the build compiles with -ffp-contract=off (CMakeLists.txt), so no width fuses a
+// multiply-add and every one rounds as the plain loop does.
+#define TECIDO_SIMD_KERNEL "core/dynamics/spring_block.inl"
+#include "core/simd/for_each_width.inl"
 
 }  // namespace
 
@@ -310,12 +152,12 @@ void PackedSprings::run_block(const Run& r, int k0, int m) {
                 fx_.data() + a, fy_.data() + a, fz_.data() + a, fx_.data() + b, fy_.data() + b, fz_.data() + b,
                 m, r.offset > 0};
   switch (kernel_) {
-#if TECIDO_SPRING_X86
-    case SpringKernel::AVX512: return v ? block_avx512<true>(p) : block_avx512<false>(p);
-    case SpringKernel::AVX: return v ? block_avx<true>(p) : block_avx<false>(p);
-    case SpringKernel::SSE2: return v ? block_sse2<true>(p) : block_sse2<false>(p);
+#if TECIDO_SIMD_X86
+    case SpringKernel::AVX512: return v ? simd8::block<simd8::Lanes, true>(p) : simd8::block<simd8::Lanes, false>(p);
+    case SpringKernel::AVX: return v ? simd4::block<simd4::Lanes, true>(p) : simd4::block<simd4::Lanes, false>(p);
 #endif
-    default: return v ? block_scalar<true>(p) : block_scalar<false>(p);
+    case SpringKernel::SSE2: return v ? simd2::block<simd2::Lanes, true>(p) : simd2::block<simd2::Lanes, false>(p);
+    default: return v ? simd1::block<simd1::Lanes, true>(p) : simd1::block<simd1::Lanes, false>(p);
   }
 }
 

@@ -1,7 +1,7 @@
 #include "core/dynamics/spring_box_contacts.h"
 
 #include "core/geometry/box_mesh.h"
-#include "core/geometry/ccd.h"
+#include "core/geometry/ccd/ccd.h"
 #include "core/geometry/obstacle_pose.h"
 #include "core/geometry/orient_predicates.h"
 #include "core/geometry/segment_box.h"

@@ -8,7 +8,7 @@
 /// linearly from its place at the start pose to its place at the end pose, as for particles): a
 /// spring hits a box when it cuts through it at the end (it enters the open box,
 /// segment_box.h), or when, over the interval, it touched one of the box's 12 edges (core's
-/// continuous edge-edge test, ccd.h, zero false negatives) while its line went from one side of
+/// continuous edge-edge test, ccd/ccd.h, zero false negatives) while its line went from one side of
 /// the edge's line to the other (exact orient3d signs at the two ends): a spring that swept
 /// through a corner of the box within the interval. That second test runs only for motions of
 /// more than kSweep of the spring's length and the box's thickness.

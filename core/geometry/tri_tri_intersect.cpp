@@ -3,23 +3,11 @@
 #include "core/geometry/orient_predicates.h"
 
 #include "core/platform/simd_level.h"
+#include "core/simd/dispatch.h"
+#include "core/simd/widths.h"
 
 #include <algorithm>
 #include <cmath>
-
-#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
-#define TECIDO_TT_AVX512 1
-#include <immintrin.h>
-// GCC would contract a*b + c into fused multiply-adds under AVX-512 (-ffp-contract=fast is its
-// default): switch that off so the filter rounds exactly like the scalar code it mirrors.
-#if defined(__clang__)
-#define TECIDO_TT_TARGET_AVX512 __attribute__((target("avx512f")))
-#else
-#define TECIDO_TT_TARGET_AVX512 __attribute__((target("avx512f"), optimize("fp-contract=off")))
-#endif
-#else
-#define TECIDO_TT_AVX512 0
-#endif
 
 namespace tecido {
 namespace {
@@ -45,22 +33,21 @@ inline int gd_bracket(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d
 constexpr double kCoefPad = 0x1p-900;
 constexpr double kErrBound = detail::kOrient3dErrBoundA + 0x1p-100;
 
+// The filter, written once for every width (tri_tri_plane.inl; the build has -ffp-contract=off,
+// so no width fuses a multiply-add and the wide copies round as the scalar one).
+#define TECIDO_SIMD_KERNEL "core/geometry/tri_tri_plane.inl"
+#include "core/simd/for_each_width.inl"
+
+inline simd1::V3<simd1::Lanes> point(const Vec3& p) { return {p[0], p[1], p[2]}; }
+
 void plane_sides(const Triangle& t, const Triangle& x, int s[3]) {
-  const double ux = t[1][0] - t[0][0], uy = t[1][1] - t[0][1], uz = t[1][2] - t[0][2];
-  const double vx = t[2][0] - t[0][0], vy = t[2][1] - t[0][1], vz = t[2][2] - t[0][2];
-  const double uyvz = uy * vz, uzvy = uz * vy, uzvx = uz * vx;
-  const double uxvz = ux * vz, uxvy = ux * vy, uyvx = uy * vx;
-  const double nx = uyvz - uzvy, ny = uzvx - uxvz, nz = uxvy - uyvx;
-  const double px = std::fabs(uyvz) + std::fabs(uzvy) + kCoefPad;
-  const double py = std::fabs(uzvx) + std::fabs(uxvz) + kCoefPad;
-  const double pz = std::fabs(uxvy) + std::fabs(uyvx) + kCoefPad;
+  using S = simd1::Lanes;
+  const simd1::PlaneFilter<S> f = simd1::plane_filter<S>(point(t[0]), point(t[1]), point(t[2]));
+  const double ux = f.u.x, uy = f.u.y, uz = f.u.z, vx = f.v.x, vy = f.v.y, vz = f.v.z;
   bool decided[3];
   for (int i = 0; i < 3; ++i) {
-    const double wx = x[i][0] - t[0][0], wy = x[i][1] - t[0][1], wz = x[i][2] - t[0][2];
-    const double det = wx * nx + wy * ny + wz * nz;
-    const double awx = std::fabs(wx), awy = std::fabs(wy), awz = std::fabs(wz);
-    const double permanent = awx * px + awy * py + awz * pz;
-    const double errbound = kErrBound * permanent + detail::kUnderflowPad;
+    double det, errbound;
+    simd1::side_filter<S>(f, point(x[i]), det, errbound);
     s[i] = (det > errbound) - (-det > errbound);
     decided[i] = std::fabs(det) > errbound;  // false for NaN too
   }
@@ -376,57 +363,21 @@ bool tri_tri_intersect(const Triangle& p, const Triangle& q) {
 }
 
 bool tri_tri_reject8_available() {
-#if TECIDO_TT_AVX512
-  static const bool ok = simd_level_allowed(SimdLevel::AVX512);  // the CPU has it and TECIDO_SIMD allows it
+  static const bool ok = simd::width_available(8);  // the CPU has AVX-512F and TECIDO_SIMD allows it
   return ok;
-#else
-  return false;
-#endif
 }
 
-#if TECIDO_TT_AVX512
-// plane_sides(q, p) for eight pairs, lane-wise, with the same operations in the same order
-// (differences, products, sums, the permanent and the bound); only the certified outcome
-// "all three strictly positive" or "all three strictly negative" is reported.
-namespace {
-/// Coordinate d of the eight vertices at offsets idx (3 * vertex) in x.
-TECIDO_TT_TARGET_AVX512 inline __m512d gather8(const double* x, const int (&idx)[8], int d) {
-  const __m256i i = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(idx));
-  return _mm512_mask_i32gather_pd(_mm512_setzero_pd(), 0xFF, i, x + d, 8);
-}
-}  // namespace
-
-TECIDO_TT_TARGET_AVX512 unsigned tri_tri_reject8(const double* x, const int (&pv)[3][8], const int (&qv)[3][8]) {
-  const __m512d t0x = gather8(x, qv[0], 0), t0y = gather8(x, qv[0], 1), t0z = gather8(x, qv[0], 2);
-  const __m512d ux = _mm512_sub_pd(gather8(x, qv[1], 0), t0x), uy = _mm512_sub_pd(gather8(x, qv[1], 1), t0y),
-                uz = _mm512_sub_pd(gather8(x, qv[1], 2), t0z);
-  const __m512d vx = _mm512_sub_pd(gather8(x, qv[2], 0), t0x), vy = _mm512_sub_pd(gather8(x, qv[2], 1), t0y),
-                vz = _mm512_sub_pd(gather8(x, qv[2], 2), t0z);
-  const __m512d uyvz = _mm512_mul_pd(uy, vz), uzvy = _mm512_mul_pd(uz, vy), uzvx = _mm512_mul_pd(uz, vx);
-  const __m512d uxvz = _mm512_mul_pd(ux, vz), uxvy = _mm512_mul_pd(ux, vy), uyvx = _mm512_mul_pd(uy, vx);
-  const __m512d nx = _mm512_sub_pd(uyvz, uzvy), ny = _mm512_sub_pd(uzvx, uxvz), nz = _mm512_sub_pd(uxvy, uyvx);
-  const __m512d pad = _mm512_set1_pd(kCoefPad);
-  const __m512d px = _mm512_add_pd(_mm512_add_pd(_mm512_abs_pd(uyvz), _mm512_abs_pd(uzvy)), pad);
-  const __m512d py = _mm512_add_pd(_mm512_add_pd(_mm512_abs_pd(uzvx), _mm512_abs_pd(uxvz)), pad);
-  const __m512d pz = _mm512_add_pd(_mm512_add_pd(_mm512_abs_pd(uxvy), _mm512_abs_pd(uyvx)), pad);
-  const __m512d bound = _mm512_set1_pd(kErrBound), upad = _mm512_set1_pd(detail::kUnderflowPad);
-  __mmask8 pos = 0xFF, neg = 0xFF;
-  for (int i = 0; i < 3; ++i) {
-    const __m512d wx = _mm512_sub_pd(gather8(x, pv[i], 0), t0x), wy = _mm512_sub_pd(gather8(x, pv[i], 1), t0y),
-                  wz = _mm512_sub_pd(gather8(x, pv[i], 2), t0z);
-    const __m512d det =
-        _mm512_add_pd(_mm512_add_pd(_mm512_mul_pd(wx, nx), _mm512_mul_pd(wy, ny)), _mm512_mul_pd(wz, nz));
-    const __m512d awx = _mm512_abs_pd(wx), awy = _mm512_abs_pd(wy), awz = _mm512_abs_pd(wz);
-    const __m512d permanent =
-        _mm512_add_pd(_mm512_add_pd(_mm512_mul_pd(awx, px), _mm512_mul_pd(awy, py)), _mm512_mul_pd(awz, pz));
-    const __m512d errbound = _mm512_add_pd(_mm512_mul_pd(bound, permanent), upad);
-    pos = _mm512_mask_cmp_pd_mask(pos, det, errbound, _CMP_GT_OQ);
-    neg = _mm512_mask_cmp_pd_mask(neg, _mm512_sub_pd(_mm512_setzero_pd(), det), errbound, _CMP_GT_OQ);
-  }
-  return static_cast<unsigned>(pos | neg) & 0xFFu;
-}
+unsigned tri_tri_reject8(const double* x, const int (&pv)[3][8], const int (&qv)[3][8]) {
+  using Kernel = unsigned (*)(const double*, const int (&)[3][8], const int (&)[3][8]);
+#if TECIDO_SIMD_X86
+  static const Kernel k = simd::pick<Kernel>(simd::widest_width(1, 8), &simd1::reject8<simd1::Lanes>,
+                                             &simd2::reject8<simd2::Lanes>, &simd4::reject8<simd4::Lanes>,
+                                             &simd8::reject8<simd8::Lanes>);
 #else
-unsigned tri_tri_reject8(const double*, const int (&)[3][8], const int (&)[3][8]) { return 0; }
+  static const Kernel k = simd::pick<Kernel>(simd::widest_width(1, 8), &simd1::reject8<simd1::Lanes>,
+                                             &simd2::reject8<simd2::Lanes>, nullptr, nullptr);
 #endif
+  return k(x, pv, qv);
+}
 
 }  // namespace tecido

@@ -3,7 +3,7 @@
 // (test_exact_ccd.cpp, test_exact_ccd_filter.cpp, test_fcl_ccd.cpp, test_bullet_ccd.cpp).
 // Every coordinate is a small dyadic rational (an integer over 512 at most), so every sum and
 // product below is exact in double precision and the constructed contacts are real contacts.
-#include "core/geometry/ccd_query.h"
+#include "core/geometry/ccd/query.h"
 
 #include <array>
 #include <cmath>

@@ -7,7 +7,7 @@
 /// Batches: every query method takes a whole batch, so that a process door answers many queries
 /// per round trip (a plug-in loops). Answers are a function of the query alone, so the order in
 /// which threads call an engine never changes a result.
-#include "core/geometry/ccd_query.h"
+#include "core/geometry/ccd/query.h"
 #include "core/geometry/segment_plane.h"
 #include "core/geometry/types.h"
 #include "core/scene/scene.h"

@@ -11,7 +11,7 @@
 ///    swapped): the closed primitives are the same sets;
 ///  - scaling by a power of two and translating by a dyadic offset (while no bit is lost).
 #include "comparisons/suites/random.h"
-#include "core/geometry/ccd_query.h"
+#include "core/geometry/ccd/query.h"
 
 #include <array>
 #include <vector>

@@ -5,7 +5,7 @@
 #include "comparisons/suites/sweep.h"
 #include "core/dynamics/simulation.h"
 #include "core/geometry/box_mesh.h"
-#include "core/geometry/ccd_query.h"
+#include "core/geometry/ccd/query.h"
 #include "reference/fcl_adapter.h"
 
 #include <cmath>

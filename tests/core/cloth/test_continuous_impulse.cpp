@@ -2,7 +2,7 @@
 // contacts (the kept gap, the weights, momentum) and the corrected motion's own answer.
 #include "core/cloth/continuous_impulse.h"
 
-#include "core/geometry/ccd.h"
+#include "core/geometry/ccd/ccd.h"
 
 #include <gtest/gtest.h>
 

@@ -92,7 +92,7 @@ TEST(CcdConstructions, ExactTransformationsKeepTheRefereesAnswer) {
 }
 
 TEST(CcdFamilies, CoreNeverMissesAndIsNeverLate) {
-  // Core's zero-false-negative property (core/geometry/ccd.h) on every family, adversarial ones
+  // Core's zero-false-negative property (core/geometry/ccd/ccd.h) on every family, adversarial ones
   // included, against the exact referee; its toi is never after the first contact.
   const CcdEngine* core = find_ccd_engine("core");
   ASSERT_NE(core, nullptr);
