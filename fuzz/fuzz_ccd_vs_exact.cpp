@@ -1,6 +1,6 @@
-// libFuzzer target: core's continuous collision test (tecido::ccd, core/geometry/ccd.h) against
+// libFuzzer target: core's continuous collision test (tecido::ccd, core/geometry/ccd/ccd.h) against
 // the exact referee (tecido::reference::exact_ccd, GMP), and core's batched first stages
-// (core/geometry/ccd_batch_stages.h) against core's scalar test. What core claims, and so what
+// (core/geometry/ccd/batch/stages.h) against core's scalar test. What core claims, and so what
 // is a finding (the target prints FINDING, the 24 coordinates in hex, and traps):
 //  1. zero false negatives: the referee finds a contact, core answers miss;
 //  2. toi never after the first contact: core's toi > the referee's upper bound toi_hi, or a
@@ -27,8 +27,8 @@
 // about that many bits and its cost grows with them (GMP); past that, a few inputs take seconds.
 #include "fuzz_coordinates.h"
 
-#include "core/geometry/ccd.h"
-#include "core/geometry/ccd_batch_stages.h"
+#include "core/geometry/ccd/ccd.h"
+#include "core/geometry/ccd/batch/stages.h"
 #include "reference/exact_ccd.h"
 
 #include <array>
@@ -193,7 +193,7 @@ void check_batch(const CcdQuery& q, const std::vector<CcdQuery>& variants, const
     points.push_back(idx);
   }
   std::vector<std::uint8_t> first;
-  for (int width : {2, 4, 8}) {
+  for (int width : {1, 2, 4, 8}) {
     if (!tecido::ccd_batch_width_available(width)) continue;
     std::vector<std::uint8_t> verdict(kQueries, 0xff);
     tecido::ccd_batch_first_stages(q.kind, x0.data(), x1.data(), 3, points.data(), kQueries, true, verdict.data(), width);

@@ -10,8 +10,8 @@
 # comparisons/io/limits.h) must each run within TIMEOUT seconds and RSS_MB of memory, which a
 # reader linear in its input meets with a wide margin and a quadratic one does not.
 # Reproduce one with: build-fuzz/bin/<target> build-fuzz/artifacts/<target>/crash-<sha1>
-# Known findings left to their owners (regress_* seeds; fuzz/fuzz_strict.h) are reported only with
-# TECIDO_FUZZ_STRICT=1 in the environment.
+# Every finding a target has made is fixed and kept as a regress_* seed in data/fuzz/<target>/,
+# which each run replays first.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 SECS=${1:-${TECIDO_FUZZ_SECONDS:-10}}

@@ -259,12 +259,14 @@ void ContinuousSelfCollisionDetector::test_pair(int i, int j, const std::vector<
       const int b0 = r[1]->v[b], b1 = r[1]->v[(b + 1) % 3];
       if (a0 == b0 || a0 == b1 || a1 == b0 || a1 == b1) continue;
       const FloatBox eb = merged(corner[1][b], corner[1][(b + 1) % 3]);
-      // The query in the pair's own order (as the brute force builds it): same answer. Edge
-      // ids are numbered in the edges' sorted order, so the smaller id is the first edge.
-      const bool first = r[0]->edge[a] < r[1]->edge[b];
-      const std::array<int, 4> points = first ? std::array<int, 4>{a0, a1, b0, b1} : std::array<int, 4>{b0, b1, a0, a1};
-      const std::uint64_t key = first ? pair_key(r[0]->edge[a], r[1]->edge[b]) : pair_key(r[1]->edge[b], r[0]->edge[a]);
-      push(CcdKind::EdgeEdge, points, key, overlap(ea, eb), x0, x1);
+      // The query exactly as the brute force builds it: the smaller edge id first (ids follow the
+      // edges' sorted order) and each edge's endpoints in index order (edges_ holds (a, b) with
+      // a < b), not in the triangle's winding. ccd's answer on a near miss within its tolerance
+      // can depend on the points' order, so any other order could differ from core-brute
+      // (fuzz_selfcollide_continuous: regress_edge_orientation, regress_edge_orientation_missed).
+      const int lo = std::min(r[0]->edge[a], r[1]->edge[b]), hi = std::max(r[0]->edge[a], r[1]->edge[b]);
+      const MeshEdge &e = edges_[lo], &g = edges_[hi];
+      push(CcdKind::EdgeEdge, {e[0], e[1], g[0], g[1]}, pair_key(lo, hi), overlap(ea, eb), x0, x1);
     }
   }
 }
