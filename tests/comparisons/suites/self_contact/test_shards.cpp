@@ -18,14 +18,14 @@ namespace {
 namespace sc = suites::self_contact;
 using testing::run_cli;
 
-std::string q(const std::filesystem::path& p) { return "'" + p.string() + "'"; }
+std::string quoted_path(const std::filesystem::path& p) { return "'" + p.string() + "'"; }
 
 TEST(ExperimentShards, MergedShardsEqualTheUnshardedRunByteForByte) {
   const auto dir = testing::temp_dir("exp-shards");
   const std::string base = "experiment self-contact --quick --threads 2 --runs 26,0-3,5";  // out of order on purpose
-  const auto full = run_cli(base + " --out " + q(dir / "full"));
-  const auto s0 = run_cli(base + " --shard 0/2 --out " + q(dir / "s0"));
-  const auto s1 = run_cli(base + " --shard 1/2 --out " + q(dir / "s1"));
+  const auto full = run_cli(base + " --out " + quoted_path(dir / "full"));
+  const auto s0 = run_cli(base + " --shard 0/2 --out " + quoted_path(dir / "s0"));
+  const auto s1 = run_cli(base + " --shard 1/2 --out " + quoted_path(dir / "s1"));
   ASSERT_EQ(full.code, 0) << full.err;
   ASSERT_EQ(s0.code, 0) << s0.err;
   ASSERT_EQ(s1.code, 0) << s1.err;
@@ -37,14 +37,14 @@ TEST(ExperimentShards, MergedShardsEqualTheUnshardedRunByteForByte) {
   ASSERT_EQ(j0["results"].size(), 6u);
   EXPECT_EQ(j0["results"][0]["result"]["case"][2], 26);
   EXPECT_EQ(j0["results"][0]["result"]["case"][3], 0);
-  const auto m = run_cli("merge " + q(dir / "s1") + " " + q(dir / "s0") + " --out " + q(dir / "merged"));
+  const auto m = run_cli("merge " + quoted_path(dir / "s1") + " " + quoted_path(dir / "s0") + " --out " + quoted_path(dir / "merged"));
   ASSERT_EQ(m.code, 0) << m.err;
   EXPECT_EQ(testing::slurp(dir / "merged" / "experiment.json"), testing::slurp(dir / "full" / "experiment.json"));
   EXPECT_EQ(testing::slurp(dir / "merged" / "experiment.md"), testing::slurp(dir / "full" / "experiment.md"));
-  for (const std::string& args : {"merge " + q(dir / "s0") + " " + q(dir / "s0") + " " + q(dir / "s1"),
-                                  "merge " + q(dir / "s0"), "merge " + q(dir / "s0") + " " + q(dir / "full"),
-                                  "merge " + q(dir / "nonexistent")}) {
-    const auto r = run_cli(args + " --out " + q(dir / "bad"));
+  for (const std::string& args : {"merge " + quoted_path(dir / "s0") + " " + quoted_path(dir / "s0") + " " + quoted_path(dir / "s1"),
+                                  "merge " + quoted_path(dir / "s0"), "merge " + quoted_path(dir / "s0") + " " + quoted_path(dir / "full"),
+                                  "merge " + quoted_path(dir / "nonexistent")}) {
+    const auto r = run_cli(args + " --out " + quoted_path(dir / "bad"));
     EXPECT_EQ(r.code, 2) << args << ": " << r.err;
     EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
   }
@@ -92,13 +92,13 @@ struct FakeRun {
     const auto d = dir / ("s" + std::to_string(i) + "of" + std::to_string(n) + "-" + std::to_string(drop) + "-" + std::to_string(add));
     std::filesystem::create_directories(d);
     testing::write_text(d / "experiment.json", sc::shard_json(p, idx, res));
-    return q(d);
+    return quoted_path(d);
   }
 };
 
 TEST(ExperimentShards, MadeUpResultsMergeExactlyAndErrorsAreKept) {
   FakeRun f("exp-fake");
-  const auto m = run_cli("merge " + f.write(2, 3) + " " + f.write(0, 3) + " " + f.write(1, 3) + " --out " + q(f.dir / "m"));
+  const auto m = run_cli("merge " + f.write(2, 3) + " " + f.write(0, 3) + " " + f.write(1, 3) + " --out " + quoted_path(f.dir / "m"));
   ASSERT_EQ(m.code, 0) << m.err;
   sc::Options o = f.opt;
   o.out_dir = (f.dir / "direct").string();
@@ -115,7 +115,7 @@ TEST(ExperimentShards, MadeUpResultsMergeExactlyAndErrorsAreKept) {
 
 TEST(ExperimentShards, InconsistentShardsExitTwo) {
   FakeRun f("exp-bad");
-  const std::string out = " --out " + q(f.dir / "never");
+  const std::string out = " --out " + quoted_path(f.dir / "never");
   const std::string s0 = f.write(0, 2), s1 = f.write(1, 2);
   struct Case {
     std::string args, says;

@@ -11,18 +11,18 @@
 namespace tecido::suites::stability {
 namespace {
 
-bool has(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+bool contains_text(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
 
 TEST(StabilityReport, TheTheoryParagraphFollowsTheBound) {
   Settings s = settings(true);
   s.amplitude_bound = 50.0;
   // 2 sqrt(1 - 1/2500) = 2 sqrt(0.9996) = 1.99959996; the 10x illustration 2 sqrt(0.99) = 1.98997.
   const std::string md = method_markdown(s);
-  EXPECT_TRUE(has(md, "a bound of 50x puts the measured limit at 2 sqrt(1 - 1/50^2) = 1.9996000")) << md;
-  EXPECT_TRUE(has(md, "would have stopped it at 1.990")) << md;
-  EXPECT_TRUE(has(md, "over 1000 periods")) << md;
-  EXPECT_TRUE(has(settings_markdown(s), "within 50x the initial amplitude"));
-  EXPECT_TRUE(has(grid_heading(s), "symplectic 2, rk4 2.828"));
+  EXPECT_TRUE(contains_text(md, "a bound of 50x puts the measured limit at 2 sqrt(1 - 1/50^2) = 1.9996000")) << md;
+  EXPECT_TRUE(contains_text(md, "would have stopped it at 1.990")) << md;
+  EXPECT_TRUE(contains_text(md, "over 1000 periods")) << md;
+  EXPECT_TRUE(contains_text(settings_markdown(s), "within 50x the initial amplitude"));
+  EXPECT_TRUE(contains_text(grid_heading(s), "symplectic 2, rk4 2.828"));
 }
 
 GridTable symplectic_grid(double h_omega_a, double h_omega_b) {
@@ -46,8 +46,8 @@ TEST(StabilityReport, TheBoundLimitedSummaryComparesWithTheBracket) {
   Settings s = settings(true);
   s.masses = {1.0, 2.0};
   const double pred = bound_stretch_limit(s.amplitude_bound);
-  EXPECT_TRUE(has(grid_markdown(s, symplectic_grid(pred, pred * (1 - 5e-7))), "inside the bisection's bracket"));
-  EXPECT_TRUE(has(grid_markdown(s, symplectic_grid(pred, pred * (1 - 1e-3))), "outside the bisection's bracket"));
+  EXPECT_TRUE(contains_text(grid_markdown(s, symplectic_grid(pred, pred * (1 - 5e-7))), "inside the bisection's bracket"));
+  EXPECT_TRUE(contains_text(grid_markdown(s, symplectic_grid(pred, pred * (1 - 1e-3))), "outside the bisection's bracket"));
 }
 
 TEST(StabilityReport, AMissingCellIsShownAndNamed) {
@@ -58,8 +58,8 @@ TEST(StabilityReport, AMissingCellIsShownAndNamed) {
   t.ratio.missing(t.cells[1].missing);
   t.h_omega.missing(t.cells[1].missing);
   const std::string md = grid_markdown(s, t);
-  EXPECT_TRUE(has(md, "| – |")) << md;
-  EXPECT_TRUE(has(md, "Incomplete: no stable step at ks = 1 N/m, m = 2 kg.")) << md;
+  EXPECT_TRUE(contains_text(md, "| – |")) << md;
+  EXPECT_TRUE(contains_text(md, "Incomplete: no stable step at ks = 1 N/m, m = 2 kg.")) << md;
 }
 
 HorizonTable horizons(IntegratorKind k, std::vector<double> measured) {
@@ -79,16 +79,16 @@ TEST(StabilityReport, TheHorizonConclusionFollowsItsTable) {
   const Settings s = settings(true);
   const std::string shrinking = horizon_markdown(
       s, {horizons(IntegratorKind::Euler, {0.2, 0.07, 0.02}), horizons(IntegratorKind::Midpoint, {1.0, 0.7, 0.4})});
-  EXPECT_TRUE(has(shrinking, "euler shrinks with every longer run; midpoint shrinks with every longer run, so no step "
+  EXPECT_TRUE(contains_text(shrinking, "euler shrinks with every longer run; midpoint shrinks with every longer run, so no step "
                              "is stable for all time"))
       << shrinking;
   const std::string flat = horizon_markdown(
       s, {horizons(IntegratorKind::Euler, {0.2, 0.07, 0.02}), horizons(IntegratorKind::Midpoint, {1.0, 1.0, 0.4})});
-  EXPECT_TRUE(has(flat, "midpoint does not shrink from 10 to 30 periods")) << flat;
-  EXPECT_FALSE(has(flat, "for all time")) << flat;
+  EXPECT_TRUE(contains_text(flat, "midpoint does not shrink from 10 to 30 periods")) << flat;
+  EXPECT_FALSE(contains_text(flat, "for all time")) << flat;
   const std::string missing = horizon_markdown(s, {horizons(IntegratorKind::Euler, {0.2, NAN, 0.02})});
-  EXPECT_TRUE(has(missing, "euler has no value at 30 periods")) << missing;
-  EXPECT_FALSE(has(missing, "for all time")) << missing;
+  EXPECT_TRUE(contains_text(missing, "euler contains_text no value at 30 periods")) << missing;
+  EXPECT_FALSE(contains_text(missing, "for all time")) << missing;
 }
 
 TEST(StabilityReport, ExtremesRowsShowTheJudgedVerdict) {
@@ -97,8 +97,8 @@ TEST(StabilityReport, ExtremesRowsShowTheJudgedVerdict) {
       {"resting contact", "a", "m", "", ExtremeRow::Judge{"rest_jitter", {0.0}, "ok: still", "degraded: jitters"}},
       {"resting contact", "b", "m", "", ExtremeRow::Judge{"rest_jitter", {1e-9}, "ok: still", "degraded: jitters"}}};
   const std::string md = extremes_markdown(rows, bands);
-  EXPECT_TRUE(has(md, "| resting contact | a | m | ok: still |")) << md;
-  EXPECT_TRUE(has(md, "| resting contact | b | m | degraded: jitters |")) << md;
+  EXPECT_TRUE(contains_text(md, "| resting contact | a | m | ok: still |")) << md;
+  EXPECT_TRUE(contains_text(md, "| resting contact | b | m | degraded: jitters |")) << md;
 }
 
 }  // namespace

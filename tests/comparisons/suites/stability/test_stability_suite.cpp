@@ -15,7 +15,7 @@ namespace tecido::suites::stability {
 namespace {
 
 /// Small settings: the whole sweep runs in well under a second, also under the sanitizers.
-Settings small() {
+Settings small_suite() {
   Settings s = settings(true);
   s.periods = 50.0;
   s.stiffnesses = {1.0, 100.0};
@@ -42,7 +42,7 @@ struct Fixture {
   std::vector<io::Json> results;
   explicit Fixture(std::vector<ExtremeGroup> groups = extreme_groups()) {
     ctx.tolerances = &tol;
-    plan = make_plan(ctx, small(), std::move(groups));
+    plan = make_plan(ctx, small_suite(), std::move(groups));
     for (std::size_t k = 0; k < case_count(plan.layout); ++k)
       results.push_back(run_case(plan.settings, plan.groups, plan.layout, k));
   }
@@ -134,11 +134,11 @@ TEST(StabilitySuite, AThrowingGroupFunctionThroughTheSweep) {
   SuiteContext ctx;
   ctx.tolerances = &tol;
   ctx.threads = 2;
-  const Sweep sweep = stability_sweep_for(ctx, small(), groups);
+  const Sweep sweep = stability_sweep_for(ctx, small_suite(), groups);
   std::vector<std::size_t> all(sweep.cases);
   for (std::size_t k = 0; k < all.size(); ++k) all[k] = k;
   const SuiteResult res = sweep.assemble(run_sweep_cases(sweep, all, 2, "t", false));
-  const Plan plan = make_plan(ctx, small(), groups);
+  const Plan plan = make_plan(ctx, small_suite(), groups);
   const std::size_t k = case_index(plan.layout, {CaseGroup::Extremes, 1});
   int failed = 0;
   for (const Check& c : res.checks) {

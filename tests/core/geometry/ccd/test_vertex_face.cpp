@@ -16,7 +16,7 @@ namespace {
 
 using ccd_test::make;
 constexpr CcdKind kVF = CcdKind::VertexFace;
-const double kTau = CcdSettings{}.time_tolerance;  // 2^-20
+const double kTimeTolerance = CcdSettings{}.time_tolerance;  // 2^-20
 
 // The unit right triangle a = 0, b = x, c = y in the plane z = 0, at rest.
 const Vec3 kA(0, 0, 0), kB(1, 0, 0), kC(0, 1, 0);
@@ -30,7 +30,7 @@ TEST(CcdVertexFace, TransversalHitThroughTheInterior) {
   const CcdAnswer a = ccd_vertex_face(vertex_through_static_face({0.2, 0.2, 1}, {0.2, 0.2, -1}));
   EXPECT_TRUE(a.hit);
   EXPECT_LE(a.toi, 0.5);
-  EXPECT_GE(a.toi, 0.5 - kTau);
+  EXPECT_GE(a.toi, 0.5 - kTimeTolerance);
 }
 
 TEST(CcdVertexFace, MissOutsideTheFace) {
@@ -50,7 +50,7 @@ TEST(CcdVertexFace, TouchingTheBoundaryIsAHit) {
   a = ccd_vertex_face(vertex_through_static_face({1, 0, 1}, {1, 0, -3}));
   EXPECT_TRUE(a.hit);
   EXPECT_LE(a.toi, 0.25);
-  EXPECT_GE(a.toi, 0.25 - kTau);
+  EXPECT_GE(a.toi, 0.25 - kTimeTolerance);
 }
 
 TEST(CcdVertexFace, FaceMovesOntoAStillVertex) {
@@ -61,7 +61,7 @@ TEST(CcdVertexFace, FaceMovesOntoAStillVertex) {
   const CcdAnswer a = ccd_vertex_face(q);
   EXPECT_TRUE(a.hit);
   EXPECT_LE(a.toi, 0.5);
-  EXPECT_GE(a.toi, 0.5 - kTau);
+  EXPECT_GE(a.toi, 0.5 - kTimeTolerance);
 }
 
 TEST(CcdVertexFace, CoplanarThroughoutEnteringTheFace) {
@@ -71,7 +71,7 @@ TEST(CcdVertexFace, CoplanarThroughoutEnteringTheFace) {
   EXPECT_TRUE(a.hit);
   EXPECT_LE(a.toi, 0.4);
   // A hit may come at most delta = 1e-9 L early (L = 3 here, speed 3): 1e-9 in time.
-  EXPECT_GE(a.toi, 0.4 - kTau - 1e-9);
+  EXPECT_GE(a.toi, 0.4 - kTimeTolerance - 1e-9);
 }
 
 TEST(CcdVertexFace, CoplanarThroughoutMissing) {
@@ -88,7 +88,7 @@ TEST(CcdVertexFace, ZeroAreaFaceThroughout) {
   CcdAnswer a = ccd_vertex_face(make(kVF, {Vec3(0.5, 0, 1), kA, kB, c}, {Vec3(0.5, 0, -1), kA, kB, c}));
   EXPECT_TRUE(a.hit);
   EXPECT_LE(a.toi, 0.5);
-  EXPECT_GE(a.toi, 0.5 - kTau - 1e-9);
+  EXPECT_GE(a.toi, 0.5 - kTimeTolerance - 1e-9);
   // p(t) = (0.5, 0.1, 1 - 2t) passes 0.1 beside it: miss.
   EXPECT_FALSE(ccd_vertex_face(make(kVF, {Vec3(0.5, 0.1, 1), kA, kB, c}, {Vec3(0.5, 0.1, -1), kA, kB, c})).hit);
   // The face is one point (all corners at (1, 1, 1)); p(t) = (1, 1, 4t - 1) meets it at t = 1/2.
@@ -107,7 +107,7 @@ TEST(CcdVertexFace, ZeroAreaAtTheInstantOfContact) {
   const CcdAnswer a = ccd_vertex_face(q);
   EXPECT_TRUE(a.hit);
   EXPECT_LE(a.toi, 0.5);
-  EXPECT_GE(a.toi, 0.5 - kTau - 1e-9);
+  EXPECT_GE(a.toi, 0.5 - kTimeTolerance - 1e-9);
 }
 
 TEST(CcdVertexFace, ContactExactlyAtTheEndsOfTheStep) {
@@ -119,7 +119,7 @@ TEST(CcdVertexFace, ContactExactlyAtTheEndsOfTheStep) {
   a = ccd_vertex_face(vertex_through_static_face({0.25, 0.25, 1}, {0.25, 0.25, 0}));
   EXPECT_TRUE(a.hit);
   EXPECT_LE(a.toi, 1.0);
-  EXPECT_GE(a.toi, 1.0 - kTau);
+  EXPECT_GE(a.toi, 1.0 - kTimeTolerance);
   // Stops 1e-3 short of the face at t = 1: a miss (0.001 >> delta = 1e-9).
   EXPECT_FALSE(ccd_vertex_face(vertex_through_static_face({0.25, 0.25, 1}, {0.25, 0.25, 1e-3})).hit);
 }
@@ -129,7 +129,7 @@ TEST(CcdVertexFace, VertexSlidingAlongAnEdge) {
   CcdAnswer a = ccd_vertex_face(vertex_through_static_face({-0.5, 0, 0}, {0.5, 0, 0}));
   EXPECT_TRUE(a.hit);
   EXPECT_LE(a.toi, 0.5);
-  EXPECT_GE(a.toi, 0.5 - kTau - 1e-9);
+  EXPECT_GE(a.toi, 0.5 - kTimeTolerance - 1e-9);
   // On the edge all along: contact at t = 0.
   a = ccd_vertex_face(vertex_through_static_face({0.25, 0, 0}, {0.75, 0, 0}));
   EXPECT_TRUE(a.hit);
@@ -183,7 +183,7 @@ TEST(CcdVertexFace, HandWorkedCasesHoldAtEveryScale) {
         EXPECT_EQ(a.hit, c.hit) << "scale 2^" << e << " case " << (&c - cases);
         if (c.hit) {
           EXPECT_LE(a.toi, c.toi + 1e-12) << "scale 2^" << e;
-          EXPECT_GE(a.toi, c.toi - kTau - 1e-9) << "scale 2^" << e;
+          EXPECT_GE(a.toi, c.toi - kTimeTolerance - 1e-9) << "scale 2^" << e;
         }
       }
     }
@@ -203,7 +203,7 @@ TEST(CcdVertexFace, BuiltTransversalContactsAreFoundOnTime) {
     const CcdAnswer a = ccd_vertex_face(q);
     ASSERT_TRUE(a.hit) << "seed step " << k << " scale " << s;
     EXPECT_LE(a.toi, ts + 1e-12) << k;
-    EXPECT_GE(a.toi, ts - kTau - 1e-12) << k;
+    EXPECT_GE(a.toi, ts - kTimeTolerance - 1e-12) << k;
     ++n;
   }
   EXPECT_EQ(n, 3000);
