@@ -18,10 +18,8 @@
 #include "core/dynamics/packed_springs.h"
 #include "core/dynamics/simulation.h"
 
-#ifdef TECIDO_HAVE_REFERENCE
 #include "reference/bullet_deformable.h"
 #include "reference/bullet_softbody.h"
-#endif
 
 #include <benchmark/benchmark.h>
 
@@ -125,7 +123,6 @@ void core_step(benchmark::State& state, IntegratorKind kind) {
   });
 }
 
-#ifdef TECIDO_HAVE_REFERENCE
 void bullet_deformable_step(benchmark::State& state) {
   run_steps<reference::DeformableTwin>(state, [](const Scene& s) { return std::make_unique<reference::DeformableTwin>(s); });
 }
@@ -136,7 +133,6 @@ void bullet_classic_step(benchmark::State& state) {
     return std::make_unique<reference::ClassicSoftBody>(s, o);
   });
 }
-#endif
 
 int register_all() {
   for (IntegratorKind k : {IntegratorKind::Euler, IntegratorKind::Symplectic, IntegratorKind::Midpoint, IntegratorKind::RK4}) {
@@ -149,12 +145,10 @@ int register_all() {
     benchmark::RegisterBenchmark(name.c_str(), spring_forces, k)->Arg(64)->Arg(256)->Unit(benchmark::kMicrosecond);
   }
   benchmark::RegisterBenchmark("BM_SpringForces/plain", plain_spring_forces)->Arg(64)->Arg(256)->Unit(benchmark::kMicrosecond);
-#ifdef TECIDO_HAVE_REFERENCE
   benchmark::RegisterBenchmark("BM_ClothStep/bullet-deformable", bullet_deformable_step)
       ->Arg(16)->Arg(32)->Arg(64)->Arg(128)->Arg(256)->Unit(benchmark::kMicrosecond);
   benchmark::RegisterBenchmark("BM_ClothStep/bullet-classic", bullet_classic_step)
       ->Arg(16)->Arg(32)->Arg(64)->Arg(128)->Arg(256)->Unit(benchmark::kMicrosecond);
-#endif
   return 0;
 }
 

@@ -6,9 +6,7 @@
 #include "comparisons/suites/drift/outside_drift.h"
 #include "comparisons/suites/drift/scenes.h"
 #include "comparisons/suites/drift/theory.h"
-#ifdef TECIDO_HAVE_REFERENCE
 #include "comparisons/suites/drift/bullet_cases.h"
-#endif
 
 #include <fmt/format.h>
 
@@ -72,12 +70,10 @@ std::vector<DriftCase> drift_cases(const Settings& s, std::uint64_t seed) {
   for (const Conservative& c : conservative_scenes(seed))
     for (IntegratorKind k : kKinds)
       out.push_back({c.name + "/" + integrator_name(k), [c, k, s] { return invariant_json(run_invariants(c.scene, k, s)); }});
-#ifdef TECIDO_HAVE_REFERENCE
   out.push_back({"twin", [s] { return twin_case(s); }});
   out.push_back({"falling", [s] { return falling_case(s); }});
   out.push_back({"classic", [s] { return classic_case(s); }});
   out.push_back({"wind", [s] { return wind_case(s); }});
-#endif
   return out;
 }
 
@@ -85,12 +81,7 @@ CheckList declare_drift_checks(const Settings& s, std::uint64_t seed, const Tole
   CheckList c;
   for (const Conservative& sc : conservative_scenes(seed))
     for (IntegratorKind k : kKinds) declare_invariants(c, sc.name, k, tol);
-#ifdef TECIDO_HAVE_REFERENCE
   declare_bullet(c, s, tol);
-#else
-  (void)s;
-  (void)declare_bullet;
-#endif
   return c;
 }
 
@@ -192,7 +183,6 @@ SuiteResult assemble(const Plan& plan, const SuiteContext& ctx, const std::vecto
   const std::vector<io::Json> outside(results.begin() + static_cast<std::ptrdiff_t>(plan.cases.size()), results.end());
   md += drift::outside_drift_markdown(plan.scenes, plan.outside, outside, checks, res.data);
   md += "### (b) Core versus Bullet on identical cloth scenes\n\n";
-#ifdef TECIDO_HAVE_REFERENCE
   const std::size_t b = plan.scenes.size() * std::size(drift::kKinds);
   const io::Json &twin = results.at(b), &falling = results.at(b + 1), &classic = results.at(b + 2);
   record_bullet(checks, plan.settings, twin, falling, classic);
@@ -202,10 +192,6 @@ SuiteResult assemble(const Plan& plan, const SuiteContext& ctx, const std::vecto
   res.data["classic"] = classic;
   res.data["twin"] = twin;
   if (res.data["twin"].is_object()) res.data["twin"].erase("curve");
-#else
-  (void)record_bullet;
-  md += "Not measured: the reference adapters are not built.\n";
-#endif
   res.markdown = md;
   res.checks = checks.finish();
   return res;

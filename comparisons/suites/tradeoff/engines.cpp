@@ -1,9 +1,7 @@
 #include "comparisons/suites/tradeoff/engines.h"
 
 #include "comparisons/engines/core_dynamics.h"
-#ifdef TECIDO_HAVE_REFERENCE
 #include "comparisons/suites/tradeoff/bullet_engines.h"
-#endif
 
 #include <fmt/format.h>
 
@@ -70,11 +68,7 @@ std::vector<TradeoffEngine> tradeoff_engines(const Settings& s) {
   std::vector<TradeoffEngine> engines;
   for (IntegratorKind k : {IntegratorKind::Euler, IntegratorKind::Symplectic, IntegratorKind::Midpoint, IntegratorKind::RK4})
     engines.push_back(core_tradeoff_engine(k));
-#ifdef TECIDO_HAVE_REFERENCE
   for (TradeoffEngine& e : bullet_tradeoff_engines(s)) engines.push_back(std::move(e));
-#else
-  (void)s;
-#endif
   return engines;
 }
 
