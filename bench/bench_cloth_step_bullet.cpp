@@ -13,10 +13,10 @@
 //   BM_SpringForces/<kernel>/<n> times the spring forces alone (PackedSprings::accumulate on the
 // same cloth, jiggled) with each kernel the CPU supports, and BM_SpringForces/plain/<n> the plain
 // reference loop (accumulate_spring_forces); all give the same bits.
-#include "core/cloth/cloth_builder.h"
 #include "core/dynamics/force_model.h"
 #include "core/dynamics/packed_springs.h"
-#include "core/dynamics/simulation.h"
+#include "core/scene/cloth_builder.h"
+#include "core/simulation/simulation.h"
 
 #include "reference/bullet_deformable.h"
 #include "reference/bullet_softbody.h"

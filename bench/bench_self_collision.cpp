@@ -1,8 +1,8 @@
 // Cloth self-collision detection per frame: broad phase (refitted box tree) + exact narrow
 // phase, on an n x n grid cloth folded over itself with a ripple, so the two layers cross
 // along curves (a crumpled frame's worst case: every triangle has a near neighbour layer).
-#include "core/cloth/cloth_builder.h"
 #include "core/cloth/self_collision.h"
+#include "core/scene/cloth_builder.h"
 #include "reference/fcl_adapter.h"
 
 #include <benchmark/benchmark.h>

@@ -1,6 +1,6 @@
 #include "reference/klst_calibration.h"
 
-#include "core/dynamics/simulation.h"
+#include "core/simulation/simulation.h"
 #include "reference/bullet_softbody.h"
 
 #include <algorithm>

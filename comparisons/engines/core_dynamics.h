@@ -1,7 +1,7 @@
 #pragma once
 /// Core's Simulation behind the DynamicsEngine interface (reference/dynamics_engine.h), so suites
 /// run core, Bullet and outside engines through one door.
-#include "core/dynamics/simulation.h"
+#include "core/simulation/simulation.h"
 #include "reference/dynamics_engine.h"
 
 namespace tecido::engines {

@@ -3,7 +3,7 @@
 #include "comparisons/suites/drift/scenes.h"
 #include "comparisons/suites/drift/theory.h"
 #include "comparisons/suites/sweep.h"
-#include "core/dynamics/simulation.h"
+#include "core/simulation/simulation.h"
 #include "reference/bullet_deformable.h"
 #include "reference/bullet_softbody.h"
 #include "reference/klst_calibration.h"

@@ -3,9 +3,9 @@
 #include "comparisons/suites/obstacles/block_scene.h"
 #include "comparisons/suites/obstacles/theory.h"
 #include "comparisons/suites/sweep.h"
-#include "core/dynamics/simulation.h"
 #include "core/geometry/box_mesh.h"
 #include "core/geometry/ccd_query.h"
+#include "core/simulation/simulation.h"
 #include "reference/fcl_adapter.h"
 
 #include <cmath>

@@ -2,7 +2,7 @@
 
 #include "comparisons/suites/plane/theory.h"
 #include "comparisons/suites/sweep.h"
-#include "core/dynamics/simulation.h"
+#include "core/simulation/simulation.h"
 
 #ifdef TECIDO_HAVE_REFERENCE
 #include "reference/bullet_deformable.h"
