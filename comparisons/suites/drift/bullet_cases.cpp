@@ -32,7 +32,7 @@ double rms_distance(const std::vector<Vec3>& a, const std::vector<Vec3>& b, doub
 io::Json unstable_json(long long step, const char* engine) { return {{"step", step}, {"engine", engine}}; }
 
 /// Steps core and the twin together to step i; false (and `unstable` set) when either fails.
-bool step_both(Simulation& core, reference::DynamicsEngine& twin, long long i, io::Json& unstable) {
+bool step_both(Simulation& core, reference::DeformableTwin& twin, long long i, io::Json& unstable) {
   if (!core.step()) {
     unstable = unstable_json(i, "core");
     return false;

@@ -49,7 +49,7 @@ TEST(TradeoffEngineSet, AFailedRunSaysWhereAndWhy) {
 TEST(TradeoffEngineSet, AnEngineThatCannotBeBuiltFailsItsRun) {
   TradeoffEngine e;
   e.name = "broken";
-  e.make = [](const Scene&) -> std::unique_ptr<reference::DynamicsEngine> { throw std::runtime_error("planted"); };
+  e.make = [](const Scene&) -> std::unique_ptr<engines::DynamicsEngine> { throw std::runtime_error("planted"); };
   const reference::GuardedRun r = e.run_guarded(hanging_cloth(4), 0.01, 0.1);
   EXPECT_FALSE(r.x.has_value());
   EXPECT_EQ(r.reason, "not built: planted");
