@@ -6,21 +6,22 @@
 #include "reference/bullet_softbody.h"
 
 #include <string>
+#include <utility>
 
 namespace tecido::engines {
 
 namespace {
 
-DynamicsEntry bullet_entry(std::string name, double evaluations_per_step) {
+DynamicsEntry bullet_entry(std::string name, double evaluations) {
   DynamicsEntry e;
   e.name = std::move(name);
   e.source = DynamicsSource::Bullet;
   e.integrator = IntegratorKind::Symplectic;  // the method the engines' scenes are set to
-  e.evaluations_per_step = evaluations_per_step;
+  e.evaluations_per_step = evaluations;
   return e;
 }
 
-DynamicsEntry deformable() {
+DynamicsEntry deformable_entry() {
   DynamicsEntry e = bullet_entry("bullet-deformable", 1.0);  // one spring-force evaluation per symplectic step
   e.make = [](const Scene& scene) -> std::unique_ptr<DynamicsEngine> {
     Scene sc = scene;
@@ -30,7 +31,7 @@ DynamicsEntry deformable() {
   return e;
 }
 
-DynamicsEntry deformable_implicit(int cg_iterations) {
+DynamicsEntry deformable_implicit_entry(int cg_iterations) {
   // Newton x CG products of the force Jacobian: varies, not counted
   DynamicsEntry e = bullet_entry("bullet-deformable-implicit-it" + std::to_string(cg_iterations), 0.0);
   e.make = [cg_iterations](const Scene& scene) -> std::unique_ptr<DynamicsEngine> {
@@ -44,7 +45,7 @@ DynamicsEntry deformable_implicit(int cg_iterations) {
   return e;
 }
 
-DynamicsEntry classic(int piterations, const ClassicCalibration& c) {
+DynamicsEntry classic_entry(int piterations, const ClassicCalibration& c) {
   DynamicsEntry e = bullet_entry("bullet-classic-it" + std::to_string(piterations), 0.0);  // position-based: no force evaluations
   e.make = [piterations, c](const Scene& scene) -> std::unique_ptr<DynamicsEngine> {
     reference::ClassicSoftBodyOptions o;
@@ -62,9 +63,9 @@ DynamicsEntry classic(int piterations, const ClassicCalibration& c) {
 
 std::vector<DynamicsEntry> bullet_dynamics_entries(const ClassicCalibration& classic_rules) {
   std::vector<DynamicsEntry> entries;
-  entries.push_back(deformable());
-  for (int k : {1, 4, 16}) entries.push_back(deformable_implicit(k));
-  for (int k : {1, 4, 16}) entries.push_back(classic(k, classic_rules));
+  entries.push_back(deformable_entry());
+  for (int k : {1, 4, 16}) entries.push_back(deformable_implicit_entry(k));
+  for (int k : {1, 4, 16}) entries.push_back(classic_entry(k, classic_rules));
   return entries;
 }
 
