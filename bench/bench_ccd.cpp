@@ -13,14 +13,12 @@
 // for core, `inclusion_share`, the share that needed the inclusion search (degenerate motion),
 // and `boxes_per_query`, its boxes per query of the set.
 // Another engine is one more line in `registered`: register_engine("fcl", &fn, false, false) gives
-// BM_CCD/fcl/vertex-face and BM_CCD/fcl/edge-edge (reference engines under TECIDO_HAVE_REFERENCE).
+// BM_CCD/fcl/vertex-face and BM_CCD/fcl/edge-edge (reference engines).
 #include "bench/ccd_queries.h"
 #include "core/geometry/ccd/ccd.h"
-#ifdef TECIDO_HAVE_REFERENCE
 #include "reference/bullet_ccd.h"
 #include "reference/exact_ccd.h"
 #include "reference/fcl_adapter.h"
-#endif
 
 #include <benchmark/benchmark.h>
 
@@ -68,12 +66,10 @@ void run_ccd(benchmark::State& state, CcdFn fn, CcdKind kind, const char* catego
 
 CcdAnswer core_ccd(const CcdQuery& q) { return tecido::ccd(q); }
 
-#ifdef TECIDO_HAVE_REFERENCE
 CcdAnswer exact_ccd(const CcdQuery& q) { return tecido::reference::to_ccd_answer(tecido::reference::exact_ccd(q)); }
 CcdAnswer fcl_ccd(const CcdQuery& q) { return tecido::reference::fcl_ccd(q); }
 /// Vertex-face only (registered for that kind alone).
 CcdAnswer bullet_ccd(const CcdQuery& q) { return tecido::reference::bullet_ccd(q).value_or(CcdAnswer{}); }
-#endif
 
 /// BM_CCD/<name>/<kind> for both kinds (or vertex-face alone) and, with per_category,
 /// BM_CCD/<name>/<kind>/<category>.
@@ -91,11 +87,9 @@ void register_engine(const char* name, CcdFn fn, bool core_counters, bool per_ca
 
 const bool registered = [] {
   register_engine("core", &core_ccd, true, true);
-#ifdef TECIDO_HAVE_REFERENCE
   register_engine("exact", &exact_ccd, false, true);
   register_engine("fcl", &fcl_ccd, false, true);
   register_engine("bullet", &bullet_ccd, false, true, true);
-#endif
   return true;
 }();
 

@@ -13,15 +13,13 @@
 //   BM_SpringForces/<kernel>/<n> times the spring forces alone (PackedSprings::accumulate on the
 // same cloth, jiggled) with each kernel the CPU supports, and BM_SpringForces/plain/<n> the plain
 // reference loop (accumulate_spring_forces); all give the same bits.
-#include "core/cloth/cloth_builder.h"
 #include "core/dynamics/force_model.h"
 #include "core/dynamics/packed_springs.h"
-#include "core/dynamics/simulation.h"
+#include "core/scene/cloth_builder.h"
+#include "core/simulation/simulation.h"
 
-#ifdef TECIDO_HAVE_REFERENCE
 #include "reference/bullet_deformable.h"
 #include "reference/bullet_softbody.h"
-#endif
 
 #include <benchmark/benchmark.h>
 
@@ -125,7 +123,6 @@ void core_step(benchmark::State& state, IntegratorKind kind) {
   });
 }
 
-#ifdef TECIDO_HAVE_REFERENCE
 void bullet_deformable_step(benchmark::State& state) {
   run_steps<reference::DeformableTwin>(state, [](const Scene& s) { return std::make_unique<reference::DeformableTwin>(s); });
 }
@@ -136,7 +133,6 @@ void bullet_classic_step(benchmark::State& state) {
     return std::make_unique<reference::ClassicSoftBody>(s, o);
   });
 }
-#endif
 
 int register_all() {
   for (IntegratorKind k : {IntegratorKind::Euler, IntegratorKind::Symplectic, IntegratorKind::Midpoint, IntegratorKind::RK4}) {
@@ -149,12 +145,10 @@ int register_all() {
     benchmark::RegisterBenchmark(name.c_str(), spring_forces, k)->Arg(64)->Arg(256)->Unit(benchmark::kMicrosecond);
   }
   benchmark::RegisterBenchmark("BM_SpringForces/plain", plain_spring_forces)->Arg(64)->Arg(256)->Unit(benchmark::kMicrosecond);
-#ifdef TECIDO_HAVE_REFERENCE
   benchmark::RegisterBenchmark("BM_ClothStep/bullet-deformable", bullet_deformable_step)
       ->Arg(16)->Arg(32)->Arg(64)->Arg(128)->Arg(256)->Unit(benchmark::kMicrosecond);
   benchmark::RegisterBenchmark("BM_ClothStep/bullet-classic", bullet_classic_step)
       ->Arg(16)->Arg(32)->Arg(64)->Arg(128)->Arg(256)->Unit(benchmark::kMicrosecond);
-#endif
   return 0;
 }
 

@@ -17,9 +17,9 @@
 // Both trees are built once on the rest shape, outside the timed loop. Counters: `pairs`
 // (reported pairs), `tests` (primitive pairs handed to the continuous test), `tree_pairs`
 // (triangle pairs sharing no vertex from the swept-box tree).
-#include "core/cloth/cloth_builder.h"
 #include "core/cloth/continuous_self_collision.h"
 #include "core/cloth/self_collision.h"
+#include "core/scene/cloth_builder.h"
 
 #include <benchmark/benchmark.h>
 

@@ -1,11 +1,9 @@
 // Cloth self-collision detection per frame: broad phase (refitted box tree) + exact narrow
 // phase, on an n x n grid cloth folded over itself with a ripple, so the two layers cross
 // along curves (a crumpled frame's worst case: every triangle has a near neighbour layer).
-#include "core/cloth/cloth_builder.h"
 #include "core/cloth/self_collision.h"
-#ifdef TECIDO_HAVE_REFERENCE
+#include "core/scene/cloth_builder.h"
 #include "reference/fcl_adapter.h"
-#endif
 
 #include <benchmark/benchmark.h>
 
@@ -75,22 +73,18 @@ void brute_frame(benchmark::State& state) {
   state.counters["triangles"] = static_cast<double>(f.tris.size());
 }
 
-#ifdef TECIDO_HAVE_REFERENCE
 void fcl_frame(benchmark::State& state) {
   const Frame f = folded_cloth(static_cast<int>(state.range(0)));
   for (auto _ : state) benchmark::DoNotOptimize(reference::fcl_self_collision(f.x, f.tris).size());
   state.counters["triangles"] = static_cast<double>(f.tris.size());
 }
-#endif
 
 const int registered = [] {
   for (int n : {32, 64, 128, 256}) {
     benchmark::RegisterBenchmark("BM_SelfCollision/core", core_frame, false)->Arg(n)->Unit(benchmark::kMillisecond);
     benchmark::RegisterBenchmark("BM_SelfCollision/core-flat", core_frame, true)->Arg(n)->Unit(benchmark::kMillisecond);
     if (n <= 64) benchmark::RegisterBenchmark("BM_SelfCollision/core-brute", brute_frame)->Arg(n)->Unit(benchmark::kMillisecond);
-#ifdef TECIDO_HAVE_REFERENCE
     benchmark::RegisterBenchmark("BM_SelfCollision/fcl", fcl_frame)->Arg(n)->Unit(benchmark::kMillisecond);
-#endif
   }
   return 0;
 }();

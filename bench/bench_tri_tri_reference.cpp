@@ -1,7 +1,6 @@
 // Reference triangle-triangle engines on the core benchmark's fixed random pairs:
 // BM_TriTri/fcl, BM_TriTri/ccd-gjk, BM_TriTri/ccd-mpr, BM_TriTri/exact. One iteration = one
 // pair (cycling through the set), so the reported time is ns per pair.
-#ifdef TECIDO_HAVE_REFERENCE
 
 #include "bench/random_pairs.h"
 #include "reference/ccd_adapter.h"
@@ -63,4 +62,3 @@ const bool registered = [] {
 
 }  // namespace
 
-#endif  // TECIDO_HAVE_REFERENCE

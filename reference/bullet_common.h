@@ -55,7 +55,7 @@ struct SpringFamilies {
 /// The families of the scene's springs. With a cloth spec (scene.cloth, appended by append_cloth),
 /// the spec says which springs are which: a spring joining two of the cloth's nodes one grid edge
 /// apart (the builder's type B: horizontal, vertical, diagonal, anti-diagonal) is elastic with
-/// k = stiffness_b, two edges apart (type A) bending with k = stiffness_a (core/cloth/cloth_builder.h).
+/// k = stiffness_b, two edges apart (type A) bending with k = stiffness_a (core/scene/cloth_builder.h).
 /// Every other spring, and every spring of a scene without a cloth, is explicit per-spring data:
 /// it is elastic when its stiffness is the elastic k, bending when it is the bending k; without a
 /// cloth the first spring sets the elastic k and the first spring with another stiffness the

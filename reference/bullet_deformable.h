@@ -10,7 +10,6 @@
 /// for that this engine cannot reproduce is listed by not_modelled(), never silently dropped.
 #include "core/geometry/types.h"
 #include "core/scene/scene.h"
-#include "reference/dynamics_engine.h"
 #include "reference/guarded_run.h"
 
 #include <memory>
@@ -44,9 +43,11 @@ struct DeformableTwinOptions {
   int krylov_iterations = 0;
 };
 
-/// The deformable-world twin of one Scene, behind the DynamicsEngine interface. Not copyable
-/// (Bullet keeps pointers into it); movable.
-class DeformableTwin final : public DynamicsEngine {
+/// The deformable-world twin of one Scene. Its stepping calls (step, positions, velocities,
+/// not_modelled, time, steps_done) are those of every dynamics engine; reference/ depends on core
+/// only, so they are plain members, and comparisons/engines/bullet_dynamics.h puts the engine
+/// behind the suites' DynamicsEngine interface. Not copyable (Bullet keeps pointers into it); movable.
+class DeformableTwin {
  public:
   /// Builds the world: a btSoftBody with node i = scene particle i (position, velocity, and the
   /// scene's inverse mass copied bit for bit; pinned = inverse mass 0), link s = scene spring s
@@ -62,7 +63,7 @@ class DeformableTwin final : public DynamicsEngine {
   /// bullet_common.h), or from the springs' own stiffnesses in a scene without a cloth; a spring
   /// that fits neither family is reported by not_modelled().
   explicit DeformableTwin(const Scene& scene, const DeformableTwinOptions& options = {});
-  ~DeformableTwin() override;
+  ~DeformableTwin();
   DeformableTwin(DeformableTwin&&) noexcept;
   DeformableTwin& operator=(DeformableTwin&&) noexcept;
   DeformableTwin(const DeformableTwin&) = delete;
@@ -71,17 +72,17 @@ class DeformableTwin final : public DynamicsEngine {
   /// Advances one step of scene.dt (stepSimulation(dt, 1, dt): exactly one internal step).
   /// Returns false when a position or velocity became NaN or infinite; later calls do nothing
   /// and return false (as core's Simulation::step).
-  bool step() override;
+  bool step();
   /// Node positions in core's numbering (node i = scene particle i) [m].
-  std::vector<Vec3> positions() const override;
+  std::vector<Vec3> positions() const;
   /// Node velocities in core's numbering [m/s].
-  std::vector<Vec3> velocities() const override;
+  std::vector<Vec3> velocities() const;
   /// Scene features this engine does not reproduce, one line each: "<feature>: <why>".
   /// Empty when the twin is exact (up to round-off) for this scene.
-  std::vector<std::string> not_modelled() const override;
+  std::vector<std::string> not_modelled() const;
   /// Simulated time [s] = steps_done() * scene.dt.
-  double time() const override;
-  long long steps_done() const override;
+  double time() const;
+  long long steps_done() const;
   /// Distance [m] from a plane at which Bullet holds a resting node (the collision margin);
   /// compare rest heights and contact times against core with this offset in mind.
   double plane_contact_offset() const;

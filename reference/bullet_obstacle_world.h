@@ -12,7 +12,6 @@
 /// mesh gives no contact; only nodes collide (no spring against edge); contacts are inelastic;
 /// keyframed meshes stay at their first frame.
 #include "core/scene/scene.h"
-#include "reference/dynamics_engine.h"
 
 #include <memory>
 #include <string>
@@ -28,13 +27,15 @@ struct ObstacleWorldOptions {
   double voxel_size = 0.25;        ///< sparse SDF cell size [m] (Bullet's default 0.25)
 };
 
-class BulletObstacleWorld final : public DynamicsEngine {
+/// The classic soft body among rigid obstacles, with the stepping calls of every dynamics engine as
+/// plain members (see DeformableTwin). Not copyable; movable.
+class BulletObstacleWorld {
  public:
   /// Builds the world: nodes, links (scene springs with ks > 0, kLST = klst ks / ks_max) and faces
   /// in core's numbering; planes as static boxes (bullet_common.h); obstacles as above, friction
   /// the obstacle's (kDF = 1). Throws std::invalid_argument for a scene it cannot build.
   explicit BulletObstacleWorld(const Scene& scene, const ObstacleWorldOptions& options = {});
-  ~BulletObstacleWorld() override;
+  ~BulletObstacleWorld();
   BulletObstacleWorld(BulletObstacleWorld&&) noexcept;
   BulletObstacleWorld& operator=(BulletObstacleWorld&&) noexcept;
   BulletObstacleWorld(const BulletObstacleWorld&) = delete;
@@ -42,12 +43,12 @@ class BulletObstacleWorld final : public DynamicsEngine {
 
   /// Moves kinematic obstacles to their poses at the step's end, then one stepSimulation(dt, 1, dt).
   /// False once a node position or velocity is not finite.
-  bool step() override;
-  std::vector<Vec3> positions() const override;
-  std::vector<Vec3> velocities() const override;
-  std::vector<std::string> not_modelled() const override;
-  double time() const override;
-  long long steps_done() const override;
+  bool step();
+  std::vector<Vec3> positions() const;
+  std::vector<Vec3> velocities() const;
+  std::vector<std::string> not_modelled() const;
+  double time() const;
+  long long steps_done() const;
   /// The distance from a convex obstacle's surface at which a node is in contact [m] (the margin).
   double contact_distance() const;
 

@@ -11,7 +11,6 @@
 /// ks (calibrate_klst_for_sag, klst_calibration.h) before any comparison of shapes.
 #include "core/geometry/types.h"
 #include "core/scene/scene.h"
-#include "reference/dynamics_engine.h"
 #include "reference/guarded_run.h"
 
 #include <memory>
@@ -40,8 +39,9 @@ struct ClassicSoftBodyOptions {
   double plane_thickness = 0.1;    ///< [m], see DeformableTwinOptions
 };
 
-/// The classic soft body of one Scene, behind the DynamicsEngine interface. Not copyable; movable.
-class ClassicSoftBody final : public DynamicsEngine {
+/// The classic soft body of one Scene, with the stepping calls of every dynamics engine as plain
+/// members (see DeformableTwin). Not copyable; movable.
+class ClassicSoftBody {
  public:
   /// Builds the world: node i = scene particle i (position, velocity, inverse mass; pinned = 0),
   /// link s = scene spring s with the scene's rest length (written after Bullet's one-time reset of
@@ -49,7 +49,7 @@ class ClassicSoftBody final : public DynamicsEngine {
   /// btSoftBodyWorldInfo (the latter moves the nodes and defaults to (0,-10,0)), planes as static
   /// boxes, stepSimulation(dt, 1, dt) per step.
   explicit ClassicSoftBody(const Scene& scene, const ClassicSoftBodyOptions& options = {});
-  ~ClassicSoftBody() override;
+  ~ClassicSoftBody();
   ClassicSoftBody(ClassicSoftBody&&) noexcept;
   ClassicSoftBody& operator=(ClassicSoftBody&&) noexcept;
   ClassicSoftBody(const ClassicSoftBody&) = delete;
@@ -57,16 +57,16 @@ class ClassicSoftBody final : public DynamicsEngine {
 
   /// Advances one step of scene.dt. Returns false when a position or velocity became NaN or
   /// infinite; later calls do nothing and return false.
-  bool step() override;
+  bool step();
   /// Node positions in core's numbering [m].
-  std::vector<Vec3> positions() const override;
+  std::vector<Vec3> positions() const;
   /// Node velocities in core's numbering [m/s].
-  std::vector<Vec3> velocities() const override;
+  std::vector<Vec3> velocities() const;
   /// Scene features this engine does not reproduce (or reproduces differently), one line each:
   /// "<feature>: <why>".
-  std::vector<std::string> not_modelled() const override;
-  double time() const override;
-  long long steps_done() const override;
+  std::vector<std::string> not_modelled() const;
+  double time() const;
+  long long steps_done() const;
   const ClassicSoftBodyOptions& options() const;
   /// Distance [m] from a plane at which Bullet holds a resting node (see DeformableTwin).
   double plane_contact_offset() const;

@@ -1,12 +1,14 @@
 #pragma once
-/// The one guarded fixed-time runner for every dynamics engine (dynamics_engine.h): core's
-/// Simulation (comparisons/engines/core_dynamics.h) and Bullet's deformable world and classic soft
-/// body alike. It tells a blow-up from a result the same way for all: a step that reports a
-/// non-finite state, or a node far from its start. The second test is what catches Bullet, which
+/// The one guarded fixed-time runner for every dynamics engine: anything with step() (false once
+/// the state is not finite) and positions() (core's numbering), so Bullet's deformable world and
+/// classic soft body here, and every engine behind the suites' DynamicsEngine interface
+/// (comparisons/engines/dynamics_engine.h: core's Simulation, Bullet's, outside engines) alike.
+/// It tells a blow-up from a result the same way for all: a step that reports a non-finite state,
+/// or a node far from its start. The second test is what catches Bullet, which
 /// zeroes NaN velocity increments and clamps speeds, so that a run that blew up stays finite
 /// (docs/dependencies.md). The step count is fixed, so a diverging run never hangs.
 /// Header-only and Bullet-free.
-#include "reference/dynamics_engine.h"
+#include "core/geometry/types.h"
 
 #include <cmath>
 #include <optional>
@@ -38,8 +40,9 @@ inline bool strayed(const std::vector<Vec3>& x, const std::vector<Vec3>& x0, dou
 /// returns false (a non-finite state), or when a node is farther than `stray_limit` [m] from its
 /// position in x0, checked every `check_every` steps (positions() copies, so not at every step)
 /// and after the last; otherwise the result holds the final positions.
-inline GuardedRun run_guarded(DynamicsEngine& engine, const std::vector<Vec3>& x0, long long steps,
-                              double stray_limit, long long check_every = 64) {
+template <class Engine>
+GuardedRun run_guarded(Engine& engine, const std::vector<Vec3>& x0, long long steps, double stray_limit,
+                       long long check_every = 64) {
   GuardedRun r;
   auto fail = [&](long long step, const std::string& why) {
     r.failed_at_step = step;

@@ -1,6 +1,6 @@
 #include "reference/klst_calibration.h"
 
-#include "core/dynamics/simulation.h"
+#include "core/simulation/simulation.h"
 #include "reference/bullet_softbody.h"
 
 #include <algorithm>
@@ -56,9 +56,11 @@ double default_settling_drag(const Scene& s) {
   return 10.0 * m / static_cast<double>(std::max<std::size_t>(n, 1));
 }
 
-}  // namespace
-
-Settled settle(DynamicsEngine& engine, double rest_speed, double max_time, const char* who) {
+/// Steps `engine` (core's, or a Bullet body: step, velocities, positions, time, steps_done) until
+/// every node is slower than `rest_speed` [m/s] or `max_time` [s] has been simulated. Throws
+/// std::runtime_error naming `who` when a step reports a non-finite state.
+template <class Engine>
+Settled settle(Engine& engine, double rest_speed, double max_time, const char* who) {
   Settled r;
   while (engine.time() < max_time) {
     if (!engine.step())
@@ -73,23 +75,25 @@ Settled settle(DynamicsEngine& engine, double rest_speed, double max_time, const
   return r;
 }
 
+/// Core's Simulation with the stepping calls settle() makes.
+struct SettlingCore {
+  explicit SettlingCore(const Scene& scene) : sim(scene) {}
+  bool step() { return sim.step(); }
+  std::vector<Vec3> positions() const { return sim.particles().x; }
+  std::vector<Vec3> velocities() const { return sim.particles().v; }
+  double time() const { return sim.time(); }
+  long long steps_done() const { return sim.steps_done(); }
+  Simulation sim;
+};
+
+}  // namespace
+
 Settled settle_core(const Scene& scene, const SagCalibrationOptions& o) {
   Scene s = scene;
   s.integrator = IntegratorKind::Symplectic;  // the equilibrium does not depend on the integrator
   if (!s.forces.air_drag || *s.forces.air_drag == 0.0)
     s.forces.air_drag = o.core_air_drag > 0.0 ? o.core_air_drag : default_settling_drag(s);
-  // Core's Simulation behind the interface (comparisons/engines/core_dynamics.h is the suites'
-  // version; reference/ cannot reach it).
-  struct Core final : DynamicsEngine {
-    explicit Core(const Scene& sc) : sim(sc) {}
-    bool step() override { return sim.step(); }
-    std::vector<Vec3> positions() const override { return sim.particles().x; }
-    std::vector<Vec3> velocities() const override { return sim.particles().v; }
-    std::vector<std::string> not_modelled() const override { return {}; }
-    double time() const override { return sim.time(); }
-    long long steps_done() const override { return sim.steps_done(); }
-    Simulation sim;
-  } core(s);
+  SettlingCore core(s);
   return settle(core, o.rest_speed, o.max_time, "core");
 }
 

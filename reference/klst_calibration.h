@@ -11,7 +11,6 @@
 /// another dt, number of sweeps or mesh (docs/dependencies.md). Only core and Bullet-free types
 /// here; the calibration drives ClassicSoftBody through its Bullet-free interface.
 #include "core/scene/scene.h"
-#include "reference/dynamics_engine.h"
 
 #include <vector>
 
@@ -69,15 +68,13 @@ struct Settled {
   bool settled = false;  ///< every node got slower than the rest speed before the time ran out
 };
 
-/// Steps `engine` until every node is slower than `rest_speed` [m/s] or `max_time` [s] has been
-/// simulated. Throws std::runtime_error naming `who` when a step reports a non-finite state.
-Settled settle(DynamicsEngine& engine, double rest_speed, double max_time, const char* who);
-
 /// Core's shape at rest: symplectic Euler (the equilibrium does not depend on the integrator)
 /// with the scene's air drag, or o.core_air_drag when it has none (0: 10 /s times the mean mass of
-/// the free particles), settled as in settle().
+/// the free particles), stepped until every node is slower than o.rest_speed or o.max_time has
+/// been simulated. Throws std::runtime_error when a step reports a non-finite state.
 Settled settle_core(const Scene& scene, const SagCalibrationOptions& o);
-/// The classic soft body's shape at rest with `klst`, o.piterations and o.kdp at scene.dt.
+/// The classic soft body's shape at rest with `klst`, o.piterations and o.kdp at scene.dt, settled
+/// as in settle_core.
 Settled settle_classic(const Scene& scene, double klst, const SagCalibrationOptions& o);
 
 /// Calibrates the classic soft body's kLST to core's Hooke stiffness by matching the static sag

@@ -20,8 +20,8 @@
 #include "comparisons/io/run_result.h"
 #include "comparisons/io/scene_json.h"
 #include "comparisons/io/work_limit.h"
-#include "core/cloth/self_collision_response.h"
-#include "core/dynamics/simulation.h"
+#include "core/simulation/self_collision_response.h"
+#include "core/simulation/simulation.h"
 
 #include <algorithm>
 #include <iostream>

@@ -4,9 +4,7 @@
 #include "comparisons/io/input_error.h"
 #include "comparisons/io/obj_mesh.h"
 #include "core/cloth/continuous_self_collision.h"
-#ifdef TECIDO_HAVE_REFERENCE
 #include "reference/exact_ccd.h"
-#endif
 
 #include <nlohmann/json.hpp>
 
@@ -16,9 +14,7 @@ namespace tecido::cli {
 
 namespace {
 
-#ifdef TECIDO_HAVE_REFERENCE
 CcdAnswer exact_test(const CcdQuery& q) { return reference::to_ccd_answer(reference::exact_ccd(q)); }
-#endif
 
 /// The two frames must be one mesh: same vertex count, same triangles in the same order.
 void check_same_mesh(const io::ObjMesh& a, const io::ObjMesh& b, const std::string& start, const std::string& end) {
@@ -46,16 +42,10 @@ ContinuousContacts run_engine(const std::string& name, const io::ObjMesh& m0, co
   const auto& x1 = m1.vertices;
   const auto& tris = m0.triangles;
   if (name == "core-brute") return continuous_self_collision_brute(x0, x1, tris);
-#ifdef TECIDO_HAVE_REFERENCE
   if (name == "exact") return continuous_self_collision_brute(x0, x1, tris, &exact_test);
-#endif
   ContinuousSelfCollisionDetector det(tris, x0);
   const ContinuousContacts& candidates = det.detect(x0, x1);
-#ifdef TECIDO_HAVE_REFERENCE
   return filter_contacts(candidates, x0, x1, tris, [](const CcdQuery& q) { return reference::exact_ccd(q).hit; });
-#else
-  return candidates;  // without the referee: core's candidates, unconfirmed (README)
-#endif
 }
 
 nlohmann::ordered_json contacts_json(const ContinuousContacts& c) {
@@ -68,11 +58,7 @@ nlohmann::ordered_json contacts_json(const ContinuousContacts& c) {
 }  // namespace
 
 const std::vector<std::string>& continuous_selfcollide_engines() {
-#ifdef TECIDO_HAVE_REFERENCE
   static const std::vector<std::string> names = {"core", "core-brute", "exact"};
-#else
-  static const std::vector<std::string> names = {"core", "core-brute"};
-#endif
   return names;
 }
 

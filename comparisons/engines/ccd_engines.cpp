@@ -2,19 +2,16 @@
 
 #include "comparisons/io/input_error.h"
 #include "core/geometry/ccd/ccd.h"
-
-#include <stdexcept>
-#ifdef TECIDO_HAVE_REFERENCE
 #include "reference/bullet_ccd.h"
 #include "reference/exact_ccd.h"
 #include "reference/fcl_adapter.h"
-#endif
+
+#include <stdexcept>
 
 namespace tecido {
 
 namespace {
 std::optional<CcdAnswer> core_ccd(const CcdQuery& q) { return ccd(q); }
-#ifdef TECIDO_HAVE_REFERENCE
 std::optional<CcdAnswer> exact(const CcdQuery& q) { return reference::to_ccd_answer(reference::exact_ccd(q)); }
 std::optional<CcdAnswer> exact_rational(const reference::RationalCcdQuery& q) {
   return reference::to_ccd_answer(reference::exact_ccd(q));
@@ -25,17 +22,14 @@ std::optional<CcdAnswer> bullet(const CcdQuery& q) {
   // bullet_ccd returns nullopt for edge-edge only: a vertex-face query is always answered.
   return reference::bullet_ccd(q);
 }
-#endif
 }  // namespace
 
 const std::vector<CcdEngine>& ccd_engines() {
   static const std::vector<CcdEngine> engines = {
       {"core", &core_ccd},
-#ifdef TECIDO_HAVE_REFERENCE
       {"exact", &exact, &exact_rational},
       {"fcl", &fcl},
       {"bullet", &bullet},  // vertex-face only (Bullet 3.24 has no edge-edge test)
-#endif
   };
   return engines;
 }
@@ -48,7 +42,6 @@ const CcdEngine* find_ccd_engine(const std::string& name) {
 
 bool prepare_ccd_entry(io::CcdQueryEntry& entry) {
   if (!entry.rational) return false;
-#ifdef TECIDO_HAVE_REFERENCE
   const reference::RationalCcdQuery& r = *entry.rational;
   entry.query = reference::nearest_double_query(r);
   for (const auto* frame : {&r.x0, &r.x1})
@@ -56,9 +49,6 @@ bool prepare_ccd_entry(io::CcdQueryEntry& entry) {
       for (const auto& c : point)
         if (!reference::is_exact_double(c)) return true;
   return false;
-#else
-  throw io::UsageError("rational queries (CSV) need the reference build (exact rational arithmetic)");
-#endif
 }
 
 std::optional<CcdAnswer> answer_ccd_entry(const CcdEngine& engine, const io::CcdQueryEntry& entry) {

@@ -1,12 +1,12 @@
 #pragma once
-/// Core's Simulation behind the DynamicsEngine interface (reference/dynamics_engine.h), so suites
-/// run core, Bullet and outside engines through one door.
-#include "core/dynamics/simulation.h"
-#include "reference/dynamics_engine.h"
+/// Core's Simulation behind the DynamicsEngine interface (dynamics_engine.h), so suites run core,
+/// Bullet and outside engines through one door.
+#include "comparisons/engines/dynamics_engine.h"
+#include "core/simulation/simulation.h"
 
 namespace tecido::engines {
 
-class CoreDynamics final : public reference::DynamicsEngine {
+class CoreDynamics final : public DynamicsEngine {
  public:
   explicit CoreDynamics(const Scene& scene) : sim_(scene) {}
   bool step() override { return sim_.step(); }

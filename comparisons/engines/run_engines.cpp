@@ -1,6 +1,7 @@
 #include "comparisons/engines/run_engines.h"
 
 #include "comparisons/engines/ccd_engines.h"
+#include "comparisons/engines/dynamics_engines.h"
 #include "comparisons/engines/segment_plane_engines.h"
 #include "comparisons/engines/self_collision_engines.h"
 #include "comparisons/engines/tri_tri_engines.h"
@@ -91,8 +92,7 @@ std::vector<std::string> builtin_engine_names() {
   for (const auto& e : segment_plane_engines()) names.push_back(e.name);
   for (const auto& e : self_collision_engines()) names.push_back(e.name);
   for (const auto& e : ccd_engines()) names.push_back(e.name);
-  for (IntegratorKind k : {IntegratorKind::Euler, IntegratorKind::Symplectic, IntegratorKind::Midpoint, IntegratorKind::RK4})
-    names.push_back(integrator_name(k));
+  for (IntegratorKind k : engines::core_integrators()) names.push_back(integrator_name(k));
   names.push_back("exact");
   return names;
 }

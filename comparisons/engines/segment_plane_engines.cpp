@@ -2,10 +2,8 @@
 
 #include "core/geometry/segment_plane_seed.h"
 
-#ifdef TECIDO_HAVE_REFERENCE
 #include "reference/exact_referee.h"
 #include "reference/fcl_adapter.h"
-#endif
 
 namespace tecido {
 
@@ -14,14 +12,12 @@ const std::vector<SegmentPlaneEngine>& segment_plane_engines() {
       {"core", [](const BoundedPlane& p, const Vec3& a, const Vec3& b) { return std::optional(segment_plane(p, a, b)); }},
       {"core-seed",
        [](const BoundedPlane& p, const Vec3& a, const Vec3& b) { return std::optional(segment_plane_seed(p, a, b)); }},
-#ifdef TECIDO_HAVE_REFERENCE
       {"fcl", &reference::fcl_segment_plane},
       {"exact",
        [](const BoundedPlane& p, const Vec3& a, const Vec3& b) {
          const reference::ExactSegmentPlane e = reference::exact_segment_plane(p, a, b);
          return std::optional(SegmentPlaneHit{e.hit, e.t});
        }},
-#endif
   };
   return engines;
 }

@@ -1,9 +1,7 @@
 #include "comparisons/engines/self_collision_engines.h"
 
-#ifdef TECIDO_HAVE_REFERENCE
 #include "reference/exact_referee.h"
 #include "reference/fcl_adapter.h"
-#endif
 
 namespace tecido {
 
@@ -15,7 +13,6 @@ std::optional<std::vector<TrianglePair>> core_brute_pairs(const std::vector<Vec3
                                                           const std::vector<std::array<int, 3>>& t) {
   return self_collision_pairs_brute(v, t);
 }
-#ifdef TECIDO_HAVE_REFERENCE
 std::optional<std::vector<TrianglePair>> fcl_pairs(const std::vector<Vec3>& v, const std::vector<std::array<int, 3>>& t) {
   std::vector<TrianglePair> out;
   for (const auto& [i, j] : reference::fcl_self_collision(v, t)) out.push_back({i, j});
@@ -24,7 +21,6 @@ std::optional<std::vector<TrianglePair>> fcl_pairs(const std::vector<Vec3>& v, c
 std::optional<std::vector<TrianglePair>> exact_pairs(const std::vector<Vec3>& v, const std::vector<std::array<int, 3>>& t) {
   return self_collision_pairs_brute(v, t, &reference::exact_tri_tri);
 }
-#endif
 
 }  // namespace
 
@@ -32,10 +28,8 @@ const std::vector<SelfCollisionEngine>& self_collision_engines() {
   static const std::vector<SelfCollisionEngine> engines = {
       {"core", &core_pairs},
       {"core-brute", &core_brute_pairs},
-#ifdef TECIDO_HAVE_REFERENCE
       {"fcl", &fcl_pairs},
       {"exact", &exact_pairs},  // brute force with CGAL's exact triangle test
-#endif
   };
   return engines;
 }

@@ -3,11 +3,9 @@
 #include "core/geometry/tri_tri_intersect.h"
 #include "core/geometry/tri_tri_moller_trumbore.h"
 #include "core/geometry/tri_tri_rotation.h"
-#ifdef TECIDO_HAVE_REFERENCE
 #include "reference/ccd_adapter.h"
 #include "reference/exact_referee.h"
 #include "reference/fcl_adapter.h"
-#endif
 
 namespace tecido {
 
@@ -23,12 +21,10 @@ const std::vector<TriTriEngine>& tri_tri_engines() {
       {"core", &wrap<&tri_tri_intersect>},
       {"core-rotation", &wrap<&tri_tri_rotation>},
       {"core-mt", &wrap<&tri_tri_moller_trumbore>},
-#ifdef TECIDO_HAVE_REFERENCE
       {"fcl", &wrap<&reference::fcl_tri_tri>},
       {"ccd-gjk", &reference::ccd_gjk_tri_tri},
       {"ccd-mpr", &reference::ccd_mpr_tri_tri},
       {"exact", &wrap<&reference::exact_tri_tri>},
-#endif
   };
   return engines;
 }

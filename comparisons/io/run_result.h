@@ -9,7 +9,7 @@
 /// edge_contacts.h).
 /// Numbers are printed with 17 significant digits, so the file round-trips bit for bit.
 #include "comparisons/io/json_reader.h"
-#include "core/dynamics/simulation.h"
+#include "core/simulation/simulation.h"
 
 namespace tecido::io {
 

@@ -2,7 +2,7 @@
 
 #include "comparisons/io/obstacle_json.h"
 #include "comparisons/io/plane_json.h"
-#include "core/cloth/cloth_builder.h"
+#include "core/scene/cloth_builder.h"
 
 #include <cmath>
 #include <memory>

@@ -1,6 +1,6 @@
 #pragma once
 /// Parameters of a rectangular cloth grid (seed sections 2.1, 3.1.2). The builder lives in
-/// core/cloth/cloth_builder.h.
+/// core/scene/cloth_builder.h.
 #include "core/geometry/types.h"
 
 #include <array>

@@ -22,7 +22,7 @@ struct MeshTopology {
   /// Edge hops from the vertex to the nearest boundary vertex (a vertex on an edge that has
   /// exactly one incident triangle); 0 on the boundary; -1 for unused vertices and for
   /// vertices whose connected piece has no boundary (a closed surface).
-  /// On the cloth builder's grid (core/cloth/cloth_builder.h) this equals
+  /// On the cloth builder's grid (core/scene/cloth_builder.h) this equals
   /// min(r, c, rows-1-r, cols-1-c) for node (r, c): every mesh edge changes r and c by at most
   /// one, and the straight path to the nearest side achieves the bound.
   std::vector<int> border_distance;

@@ -44,7 +44,7 @@ struct Scene {
   /// Triangle mesh over particle indices (the cloth's), in the builder's documented order.
   std::vector<std::array<int, 3>> triangles;
   /// Self-collision detection and response over `triangles`, when the scene asks for it
-  /// (core/cloth/self_collision_response.h installs it as the simulation's post_step hook).
+  /// (core/simulation/self_collision_response.h installs it as the simulation's post_step hook).
   std::optional<SelfCollisionSettings> self_collision;
 };
 

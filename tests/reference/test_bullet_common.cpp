@@ -1,10 +1,10 @@
 // The Bullet adapters' shared pieces (reference/bullet_common.h): which springs are Bullet's elastic
 // and bending links, read from the cloth spec; and the static box that stands in for a bounded
-// plane. Truths: the cloth builder's documented spring order (core/cloth/cloth_builder.h) and
+// plane. Truths: the cloth builder's documented spring order (core/scene/cloth_builder.h) and
 // hand-worked boxes.
 #include "reference/bullet_common.h"
 
-#include "core/cloth/cloth_builder.h"
+#include "core/scene/cloth_builder.h"
 
 #include <gtest/gtest.h>
 

@@ -3,8 +3,8 @@
 // fall, and the scene's own numbering.
 #include "reference/bullet_deformable.h"
 
-#include "core/cloth/cloth_builder.h"
-#include "core/dynamics/simulation.h"
+#include "core/scene/cloth_builder.h"
+#include "core/simulation/simulation.h"
 #include "tests/support/curtain.h"
 
 #include <gtest/gtest.h>

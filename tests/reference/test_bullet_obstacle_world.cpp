@@ -2,7 +2,7 @@
 // cloth held by a static box and by a sphere, pushed by a kinematic box, and the notes it gives.
 #include "reference/bullet_obstacle_world.h"
 
-#include "core/cloth/cloth_builder.h"
+#include "core/scene/cloth_builder.h"
 
 #include <gtest/gtest.h>
 

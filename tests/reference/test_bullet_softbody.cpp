@@ -3,8 +3,8 @@
 // (Its kLST calibration is tested in test_klst_calibration.cpp.)
 #include "reference/bullet_softbody.h"
 
-#include "core/cloth/cloth_builder.h"
-#include "core/dynamics/simulation.h"
+#include "core/scene/cloth_builder.h"
+#include "core/simulation/simulation.h"
 #include "tests/support/curtain.h"
 
 #include <gtest/gtest.h>

@@ -13,20 +13,20 @@ namespace {
 
 // One particle from the origin along x at `speed` m per step; step `nan_at` (1-based, 0 = never)
 // reports a non-finite state.
-class Planted final : public DynamicsEngine {
+class Planted final {
  public:
   Planted(double speed, long long nan_at) : speed_(speed), nan_at_(nan_at) {}
-  bool step() override {
+  bool step() {
     ++steps_;
     if (steps_ == nan_at_) x_ = std::numeric_limits<double>::quiet_NaN();
     else x_ += speed_;
     return std::isfinite(x_);
   }
-  std::vector<Vec3> positions() const override { return {Vec3(x_, 0, 0)}; }
-  std::vector<Vec3> velocities() const override { return {Vec3(speed_, 0, 0)}; }
-  std::vector<std::string> not_modelled() const override { return {}; }
-  double time() const override { return static_cast<double>(steps_); }
-  long long steps_done() const override { return steps_; }
+  std::vector<Vec3> positions() const { return {Vec3(x_, 0, 0)}; }
+  std::vector<Vec3> velocities() const { return {Vec3(speed_, 0, 0)}; }
+  std::vector<std::string> not_modelled() const { return {}; }
+  double time() const { return static_cast<double>(steps_); }
+  long long steps_done() const { return steps_; }
 
  private:
   double speed_;

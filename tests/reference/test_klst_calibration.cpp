@@ -5,7 +5,7 @@
 // projection), and the tradeoff suite's converged curtain motion.
 #include "reference/klst_calibration.h"
 
-#include "core/cloth/cloth_builder.h"
+#include "core/scene/cloth_builder.h"
 #include "reference/bullet_softbody.h"
 #include "tests/support/curtain.h"
 

@@ -5,8 +5,8 @@
 // as comparisons/suites/tradeoff/curtain.h, written out here so the reference tests need nothing
 // from comparisons/). For n = 8 its springs' highest frequency is below 2 / 2^-6 s, so h0 = 2^-6 s
 // is the suite's first step for it. Core's runs of it are the truths the Bullet tests compare with.
-#include "core/cloth/cloth_builder.h"
-#include "core/dynamics/simulation.h"
+#include "core/scene/cloth_builder.h"
+#include "core/simulation/simulation.h"
 
 #include <gtest/gtest.h>
 

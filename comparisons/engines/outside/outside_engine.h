@@ -2,16 +2,16 @@
 /// An engine from outside tecido's tree, reached through one of two doors: a C plug-in
 /// (include/tecido/plugin.h, plugin_engine.h) or a process speaking JSON lines (process_engine.h).
 /// Commands and suites see it through this one interface: batches of queries in, answers out in
-/// the same order, and dynamics simulations behind reference::DynamicsEngine.
+/// the same order, and dynamics simulations behind engines::DynamicsEngine.
 ///
 /// Batches: every query method takes a whole batch, so that a process door answers many queries
 /// per round trip (a plug-in loops). Answers are a function of the query alone, so the order in
 /// which threads call an engine never changes a result.
+#include "comparisons/engines/dynamics_engine.h"
 #include "core/geometry/ccd/query.h"
 #include "core/geometry/segment_plane.h"
 #include "core/geometry/types.h"
 #include "core/scene/scene.h"
-#include "reference/dynamics_engine.h"
 
 #include <memory>
 #include <optional>
@@ -41,7 +41,7 @@ struct SegmentPlaneQuery {
 /// A dynamics simulation created by an outside engine, or the engine's reason for refusing the
 /// scene ("not modelled by <engine>: <reason>" in reports).
 struct Creation {
-  std::unique_ptr<reference::DynamicsEngine> simulation;  ///< null when refused
+  std::unique_ptr<engines::DynamicsEngine> simulation;  ///< null when refused
   std::string refusal;                                    ///< the engine's reason, when refused
 };
 

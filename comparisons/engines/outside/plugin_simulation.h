@@ -1,9 +1,9 @@
 #pragma once
 /// A plug-in engine's simulation (create/step/read/destroy of include/tecido/plugin.h) behind
-/// reference::DynamicsEngine: step() is step(sim, dt, 1), advance(n) is step(sim, dt, n) in one
+/// engines::DynamicsEngine: step() is step(sim, dt, 1), advance(n) is step(sim, dt, n) in one
 /// call; positions and velocities are read back after each call, and a non-finite value or a
 /// nonzero return ends the run (step() and advance() return false from then on).
-#include "reference/dynamics_engine.h"
+#include "comparisons/engines/dynamics_engine.h"
 
 #include <tecido/plugin.h>
 
@@ -13,7 +13,7 @@
 
 namespace tecido::outside {
 
-class PluginSimulation final : public reference::DynamicsEngine {
+class PluginSimulation final : public engines::DynamicsEngine {
  public:
   /// Takes ownership of `handle` (destroyed with the engine's destroy()). `mutex`, when set, is
   /// held around every call into the plug-in. `keep_alive` keeps the library loaded.

@@ -1,16 +1,16 @@
 #pragma once
-/// A process engine's simulation behind reference::DynamicsEngine: step() is one round trip
+/// A process engine's simulation behind engines::DynamicsEngine: step() is one round trip
 /// {"op":"step","dt":h,"steps":1}, advance(n) one round trip of n steps. Holds the process's scene
 /// lease (process_engine.h) until destroyed. A null (non-finite) coordinate in a reply ends the run.
+#include "comparisons/engines/dynamics_engine.h"
 #include "comparisons/engines/outside/process_engine.h"
-#include "reference/dynamics_engine.h"
 
 #include <memory>
 #include <vector>
 
 namespace tecido::outside {
 
-class ProcessSimulation final : public reference::DynamicsEngine {
+class ProcessSimulation final : public engines::DynamicsEngine {
  public:
   /// After a successful create on `engine` (which holds the lease for this simulation).
   ProcessSimulation(std::shared_ptr<ProcessEngine> engine, const Scene& scene);

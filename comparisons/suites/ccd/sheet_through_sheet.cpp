@@ -1,10 +1,10 @@
 #include "comparisons/suites/ccd/sheet_through_sheet.h"
 
-#include "core/cloth/cloth_builder.h"
+#include "core/scene/cloth_builder.h"
 #include "core/cloth/continuous_self_collision.h"
 #include "core/cloth/self_collision.h"
-#include "core/cloth/self_collision_response.h"
-#include "core/dynamics/simulation.h"
+#include "core/simulation/self_collision_response.h"
+#include "core/simulation/simulation.h"
 #include "reference/exact_ccd.h"
 #include "reference/exact_referee.h"
 

@@ -3,7 +3,7 @@
 #include "comparisons/suites/drift/scenes.h"
 #include "comparisons/suites/drift/theory.h"
 #include "comparisons/suites/sweep.h"
-#include "core/dynamics/simulation.h"
+#include "core/simulation/simulation.h"
 #include "reference/bullet_deformable.h"
 #include "reference/bullet_softbody.h"
 #include "reference/klst_calibration.h"
@@ -32,7 +32,7 @@ double rms_distance(const std::vector<Vec3>& a, const std::vector<Vec3>& b, doub
 io::Json unstable_json(long long step, const char* engine) { return {{"step", step}, {"engine", engine}}; }
 
 /// Steps core and the twin together to step i; false (and `unstable` set) when either fails.
-bool step_both(Simulation& core, reference::DynamicsEngine& twin, long long i, io::Json& unstable) {
+bool step_both(Simulation& core, reference::DeformableTwin& twin, long long i, io::Json& unstable) {
   if (!core.step()) {
     unstable = unstable_json(i, "core");
     return false;

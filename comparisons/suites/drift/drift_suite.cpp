@@ -1,14 +1,12 @@
 #include "comparisons/suites/drift/drift_suite.h"
 
+#include "comparisons/engines/dynamics_engines.h"
+#include "comparisons/suites/drift/bullet_cases.h"
 #include "comparisons/suites/drift/drift_report.h"
-#include "comparisons/engines/outside/outside_engines.h"
 #include "comparisons/suites/drift/invariants.h"
 #include "comparisons/suites/drift/outside_drift.h"
 #include "comparisons/suites/drift/scenes.h"
 #include "comparisons/suites/drift/theory.h"
-#ifdef TECIDO_HAVE_REFERENCE
-#include "comparisons/suites/drift/bullet_cases.h"
-#endif
 
 #include <fmt/format.h>
 
@@ -20,9 +18,6 @@ namespace tecido::suites {
 namespace drift {
 
 namespace {
-
-constexpr IntegratorKind kKinds[] = {IntegratorKind::Euler, IntegratorKind::Symplectic, IntegratorKind::Midpoint,
-                                     IntegratorKind::RK4};
 
 std::string run_prefix(const std::string& scene, IntegratorKind k) {
   return fmt::format("drift/{}/{}/", scene, integrator_name(k));
@@ -70,27 +65,20 @@ void declare_bullet(CheckList& c, const Settings& s, const Tolerances& tol) {
 std::vector<DriftCase> drift_cases(const Settings& s, std::uint64_t seed) {
   std::vector<DriftCase> out;
   for (const Conservative& c : conservative_scenes(seed))
-    for (IntegratorKind k : kKinds)
+    for (IntegratorKind k : engines::core_integrators())
       out.push_back({c.name + "/" + integrator_name(k), [c, k, s] { return invariant_json(run_invariants(c.scene, k, s)); }});
-#ifdef TECIDO_HAVE_REFERENCE
   out.push_back({"twin", [s] { return twin_case(s); }});
   out.push_back({"falling", [s] { return falling_case(s); }});
   out.push_back({"classic", [s] { return classic_case(s); }});
   out.push_back({"wind", [s] { return wind_case(s); }});
-#endif
   return out;
 }
 
 CheckList declare_drift_checks(const Settings& s, std::uint64_t seed, const Tolerances& tol) {
   CheckList c;
   for (const Conservative& sc : conservative_scenes(seed))
-    for (IntegratorKind k : kKinds) declare_invariants(c, sc.name, k, tol);
-#ifdef TECIDO_HAVE_REFERENCE
+    for (IntegratorKind k : engines::core_integrators()) declare_invariants(c, sc.name, k, tol);
   declare_bullet(c, s, tol);
-#else
-  (void)s;
-  (void)declare_bullet;
-#endif
   return c;
 }
 
@@ -165,7 +153,7 @@ std::string assemble_invariants(const Plan& plan, const SuiteContext& ctx, const
   std::vector<InvariantRow> rows;
   std::size_t k = 0;
   for (const drift::Conservative& c : plan.scenes) {
-    for (IntegratorKind kind : drift::kKinds) {
+    for (IntegratorKind kind : engines::core_integrators()) {
       InvariantRow row{c.name, kind, {}, {}};
       if (const std::string* err = case_error(results.at(k))) row.error = *err;
       else row.run = drift::invariant_from_json(results.at(k));
@@ -192,8 +180,7 @@ SuiteResult assemble(const Plan& plan, const SuiteContext& ctx, const std::vecto
   const std::vector<io::Json> outside(results.begin() + static_cast<std::ptrdiff_t>(plan.cases.size()), results.end());
   md += drift::outside_drift_markdown(plan.scenes, plan.outside, outside, checks, res.data);
   md += "### (b) Core versus Bullet on identical cloth scenes\n\n";
-#ifdef TECIDO_HAVE_REFERENCE
-  const std::size_t b = plan.scenes.size() * std::size(drift::kKinds);
+  const std::size_t b = plan.scenes.size() * engines::core_integrators().size();
   const io::Json &twin = results.at(b), &falling = results.at(b + 1), &classic = results.at(b + 2);
   record_bullet(checks, plan.settings, twin, falling, classic);
   md += drift::twin_markdown(ctx, plan.settings, twin, res.plots) + drift::falling_markdown(plan.settings, falling) +
@@ -202,10 +189,6 @@ SuiteResult assemble(const Plan& plan, const SuiteContext& ctx, const std::vecto
   res.data["classic"] = classic;
   res.data["twin"] = twin;
   if (res.data["twin"].is_object()) res.data["twin"].erase("curve");
-#else
-  (void)record_bullet;
-  md += "Not measured: the reference adapters are not built.\n";
-#endif
   res.markdown = md;
   res.checks = checks.finish();
   return res;
@@ -219,9 +202,10 @@ Sweep drift_sweep(const SuiteContext& ctx) {
   plan->scenes = drift::conservative_scenes(ctx.seed);
   plan->cases = drift::drift_cases(plan->settings, ctx.seed);
   plan->checks = drift::declare_drift_checks(plan->settings, ctx.seed, *ctx.tolerances);
-  if (ctx.outside)
-    for (const auto& e : ctx.outside->with(&outside::Capabilities::dynamics))
-      if (ctx.selects(e->name())) plan->outside.push_back(e);
+  engines::DynamicsSources outside_only;
+  outside_only.outside = true;
+  for (const engines::DynamicsEntry& e : engines::dynamics_engines(outside_only, ctx.outside.get()))
+    if (ctx.selects(e.name)) plan->outside.push_back(e.outside_engine);
   drift::declare_outside_drift(plan->checks, plan->scenes, plan->outside, *ctx.tolerances);
   Sweep s;
   s.cases = plan->cases.size() + plan->outside.size() * plan->scenes.size();

@@ -3,7 +3,7 @@
 #include "comparisons/suites/drift/theory.h"
 #include "comparisons/suites/sweep.h"
 #include "core/dynamics/force_model.h"
-#include "core/dynamics/simulation.h"
+#include "core/simulation/simulation.h"
 
 #include <algorithm>
 #include <cmath>

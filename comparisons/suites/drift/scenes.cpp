@@ -1,7 +1,7 @@
 #include "comparisons/suites/drift/scenes.h"
 
 #include "comparisons/suites/random.h"
-#include "core/cloth/cloth_builder.h"
+#include "core/scene/cloth_builder.h"
 
 namespace tecido::suites::drift {
 

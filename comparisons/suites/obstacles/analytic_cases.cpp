@@ -3,8 +3,8 @@
 #include "comparisons/suites/obstacles/box_interior.h"
 #include "comparisons/suites/obstacles/theory.h"
 #include "comparisons/suites/sweep.h"
-#include "core/dynamics/simulation.h"
 #include "core/geometry/obstacle_pose.h"
+#include "core/simulation/simulation.h"
 
 #include <Eigen/Geometry>
 

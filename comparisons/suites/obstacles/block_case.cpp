@@ -2,7 +2,7 @@
 
 #include "comparisons/suites/obstacles/block_scene.h"
 #include "comparisons/suites/sweep.h"
-#include "core/dynamics/simulation.h"
+#include "core/simulation/simulation.h"
 
 #include <algorithm>
 #include <cmath>

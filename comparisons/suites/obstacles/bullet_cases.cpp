@@ -5,7 +5,7 @@
 #include "comparisons/suites/obstacles/box_interior.h"
 #include "comparisons/suites/obstacles/theory.h"
 #include "comparisons/suites/sweep.h"
-#include "core/dynamics/simulation.h"
+#include "core/simulation/simulation.h"
 #include "reference/bullet_obstacle_world.h"
 
 #include <algorithm>

@@ -2,10 +2,8 @@
 
 #include "comparisons/suites/obstacles/analytic_cases.h"
 #include "comparisons/suites/obstacles/block_case.h"
-#ifdef TECIDO_HAVE_REFERENCE
 #include "comparisons/suites/obstacles/bullet_cases.h"
 #include "comparisons/suites/obstacles/fcl_cases.h"
-#endif
 
 #include <fmt/format.h>
 
@@ -32,13 +30,11 @@ std::vector<Case> cases(const Settings& s, const std::string& data_dir) {
       out.push_back({"fast/" + scene + "/h=" + step_label(h), [s, scene, h] { return fast_case(s, scene, h); }});
   for (int n : s.block_sides)
     for (bool on : {false, true}) out.push_back({block_name(n, on), [s, data_dir, n, on] { return block_case(s, data_dir, n, on); }});
-#ifdef TECIDO_HAVE_REFERENCE
   out.push_back({"bullet/sphere", [s, data_dir] { return bullet_sphere_case(s, data_dir); }});
   for (int n : s.block_sides)
     out.push_back({bullet_block_name(n), [s, data_dir, n] { return bullet_block_case(s, data_dir, n); }});
   for (int n : s.block_sides)
     out.push_back({fcl_block_name(n), [s, data_dir, n] { return fcl_block_case(s, data_dir, n); }});
-#endif
   return out;
 }
 

@@ -3,7 +3,7 @@
 #include "comparisons/suites/obstacles/block_scene.h"
 #include "comparisons/suites/obstacles/theory.h"
 #include "comparisons/suites/sweep.h"
-#include "core/dynamics/simulation.h"
+#include "core/simulation/simulation.h"
 #include "core/geometry/box_mesh.h"
 #include "core/geometry/ccd/query.h"
 #include "reference/fcl_adapter.h"

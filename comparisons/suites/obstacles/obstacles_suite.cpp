@@ -11,12 +11,6 @@ namespace tecido::suites {
 
 namespace {
 
-#ifdef TECIDO_HAVE_REFERENCE
-constexpr bool kReference = true;
-#else
-constexpr bool kReference = false;
-#endif
-
 struct Plan {
   obstacles::Settings settings;
   std::vector<obstacles::Case> cases;
@@ -36,7 +30,7 @@ SuiteResult assemble(const Plan& plan, const std::vector<io::Json>& results) {
   const obstacles::Settings& s = plan.settings;
   res.markdown = obstacles::method_markdown(s) + obstacles::analytic_markdown(s, by_name) +
                  obstacles::fast_markdown(s, by_name) + obstacles::block_markdown(s, by_name) +
-                 (kReference ? obstacles::bullet_markdown(s, by_name) : std::string());
+                 obstacles::bullet_markdown(s, by_name);
   res.data = by_name;
   res.checks = checks.finish();
   return res;
@@ -46,7 +40,7 @@ SuiteResult assemble(const Plan& plan, const std::vector<io::Json>& results) {
 
 Sweep obstacles_sweep(const SuiteContext& ctx) {
   const obstacles::Settings s = obstacles::settings(ctx.quick);
-  auto plan = std::make_shared<const Plan>(Plan{s, obstacles::cases(s, ctx.data_dir), obstacles::declare_checks(s, *ctx.tolerances, kReference)});
+  auto plan = std::make_shared<const Plan>(Plan{s, obstacles::cases(s, ctx.data_dir), obstacles::declare_checks(s, *ctx.tolerances, true)});
   Sweep sw;
   sw.cases = plan->cases.size();
   sw.run_case = [plan](std::size_t k) { return plan->cases.at(k).run(); };

@@ -4,7 +4,7 @@
 #include "comparisons/suites/random.h"
 #include "comparisons/suites/sweep.h"
 #include "comparisons/suites/thread_cpu_time.h"
-#include "core/dynamics/simulation.h"
+#include "core/simulation/simulation.h"
 
 #include <fmt/format.h>
 

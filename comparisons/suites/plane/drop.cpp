@@ -2,7 +2,7 @@
 
 #include "comparisons/suites/plane/theory.h"
 #include "comparisons/suites/sweep.h"
-#include "core/dynamics/simulation.h"
+#include "core/simulation/simulation.h"
 
 #include "reference/bullet_deformable.h"
 #include "reference/bullet_rigid_drop.h"

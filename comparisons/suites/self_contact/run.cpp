@@ -1,8 +1,8 @@
 #include "comparisons/suites/self_contact/run.h"
 
 #include "core/cloth/gia.h"
-#include "core/cloth/self_collision_response.h"
-#include "core/dynamics/simulation.h"
+#include "core/simulation/self_collision_response.h"
+#include "core/simulation/simulation.h"
 
 #include <limits>
 #include <memory>

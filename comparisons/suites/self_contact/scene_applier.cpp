@@ -1,7 +1,7 @@
 #include "comparisons/suites/self_contact/scene_applier.h"
 
 #include "comparisons/io/input_error.h"
-#include "core/cloth/cloth_builder.h"
+#include "core/scene/cloth_builder.h"
 
 #include <cmath>
 #include <memory>

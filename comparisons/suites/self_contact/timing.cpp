@@ -3,7 +3,7 @@
 #include "core/cloth/edge_response.h"
 #include "core/cloth/mesh_topology.h"
 #include "core/cloth/self_contact_counter.h"
-#include "core/dynamics/simulation.h"
+#include "core/simulation/simulation.h"
 
 #include <fmt/format.h>
 

@@ -1,7 +1,7 @@
 #include "comparisons/suites/selfcollision/frame_recorder.h"
 
 #include "core/cloth/self_collision.h"
-#include "core/dynamics/simulation.h"
+#include "core/simulation/simulation.h"
 
 #include <cmath>
 

@@ -1,8 +1,8 @@
 #include "comparisons/suites/selfcollision/frame_sources.h"
 
 #include "comparisons/io/scene_json.h"
-#include "core/cloth/cloth_builder.h"
 #include "core/geometry/bounded_plane.h"
+#include "core/scene/cloth_builder.h"
 
 #include <algorithm>
 

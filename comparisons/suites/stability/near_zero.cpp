@@ -2,7 +2,7 @@
 
 #include "comparisons/suites/stability/theory.h"
 #include "core/dynamics/force_model.h"
-#include "core/dynamics/simulation.h"
+#include "core/simulation/simulation.h"
 
 #include <fmt/format.h>
 

@@ -1,7 +1,7 @@
 #include "comparisons/suites/stability/offset.h"
 
 #include "comparisons/suites/stability/theory.h"
-#include "core/dynamics/simulation.h"
+#include "core/simulation/simulation.h"
 
 #include <fmt/format.h>
 

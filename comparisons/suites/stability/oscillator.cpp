@@ -1,7 +1,7 @@
 #include "comparisons/suites/stability/oscillator.h"
 
 #include "comparisons/suites/stability/theory.h"
-#include "core/dynamics/simulation.h"
+#include "core/simulation/simulation.h"
 
 #include <algorithm>
 #include <cmath>

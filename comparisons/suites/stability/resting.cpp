@@ -1,6 +1,6 @@
 #include "comparisons/suites/stability/resting.h"
 
-#include "core/dynamics/simulation.h"
+#include "core/simulation/simulation.h"
 
 #include <fmt/format.h>
 

@@ -1,6 +1,6 @@
 #include "comparisons/suites/stability/stability_suite.h"
 
-#include "comparisons/engines/outside/outside_engines.h"
+#include "comparisons/engines/dynamics_engines.h"
 #include "comparisons/suites/stability/checks.h"
 #include "comparisons/suites/stability/extremes_notes.h"
 #include "comparisons/suites/stability/stability_report.h"
@@ -15,11 +15,12 @@ Plan make_plan(const SuiteContext& ctx, Settings s, std::vector<ExtremeGroup> gr
   plan.layout = layout(s, groups.size());
   plan.checks = declare_checks(s, groups, *ctx.tolerances);
   plan.bands = verdict_bands(*ctx.tolerances);
-  std::vector<outside::OutsideEnginePtr> engines;
-  if (ctx.outside)
-    for (const auto& e : ctx.outside->with(&outside::Capabilities::dynamics))
-      if (ctx.selects(e->name())) engines.push_back(e);
-  plan.outside = outside_plan(s, std::move(engines));
+  engines::DynamicsSources outside_only;  // core's integrators are the settings' bounded and growers
+  outside_only.outside = true;
+  std::vector<outside::OutsideEnginePtr> chosen;
+  for (const engines::DynamicsEntry& e : engines::dynamics_engines(outside_only, ctx.outside.get()))
+    if (ctx.selects(e.name)) chosen.push_back(e.outside_engine);
+  plan.outside = outside_plan(s, std::move(chosen));
   declare_outside_checks(plan.checks, plan.outside, *ctx.tolerances);
   plan.settings = std::move(s);
   plan.groups = std::move(groups);

@@ -1,9 +1,7 @@
 #include "comparisons/suites/tradeoff/engines.h"
 
-#include "comparisons/engines/core_dynamics.h"
-#ifdef TECIDO_HAVE_REFERENCE
-#include "comparisons/suites/tradeoff/bullet_engines.h"
-#endif
+#include "comparisons/engines/dynamics_engines.h"
+#include "comparisons/suites/tradeoff/outside_engines.h"
 
 #include <fmt/format.h>
 
@@ -15,7 +13,7 @@ namespace tecido::suites::tradeoff {
 namespace {
 
 /// reference::run_guarded taking `chunk` steps per advance() call, the stray check after each.
-reference::GuardedRun run_chunked(reference::DynamicsEngine& e, const std::vector<Vec3>& x0, long long steps,
+reference::GuardedRun run_chunked(engines::DynamicsEngine& e, const std::vector<Vec3>& x0, long long steps,
                                   double stray_limit, long long chunk) {
   reference::GuardedRun r;
   for (long long done = 0; done < steps;) {
@@ -37,7 +35,7 @@ reference::GuardedRun run_chunked(reference::DynamicsEngine& e, const std::vecto
 reference::GuardedRun TradeoffEngine::run_guarded(const Scene& scene, double h, double seconds, double stray_limit) const {
   Scene s = scene;
   s.dt = h;
-  std::unique_ptr<reference::DynamicsEngine> e;
+  std::unique_ptr<engines::DynamicsEngine> e;
   try {
     e = make(s);
   } catch (const std::exception& ex) {
@@ -54,28 +52,47 @@ std::optional<std::vector<Vec3>> TradeoffEngine::run(const Scene& scene, double 
   return run_guarded(scene, h, seconds).x;
 }
 
-TradeoffEngine core_tradeoff_engine(IntegratorKind kind) {
+namespace {
+
+/// Bullet's ranges by engine (bullet_dynamics_engines.h names them by kind).
+void set_bullet_range(TradeoffEngine& e, const BulletRange& r) {
+  if (e.name.rfind("bullet-classic", 0) == 0) e.max_n = r.max_side_classic;
+  else if (e.name.rfind("bullet-deformable-implicit", 0) == 0) e.max_n = r.max_side_implicit;
+  else e.max_n = r.max_side_explicit;
+  e.max_steps = r.max_steps;
+}
+
+}  // namespace
+
+TradeoffEngine tradeoff_engine(const engines::DynamicsEntry& entry, const Settings& s) {
   TradeoffEngine e;
-  e.name = std::string("core-") + integrator_name(kind);
-  e.evaluations_per_step = evaluations_per_step(kind);
-  e.make = [kind](const Scene& scene) -> std::unique_ptr<reference::DynamicsEngine> {
-    Scene s = scene;
-    s.integrator = kind;
-    return std::make_unique<engines::CoreDynamics>(s);
-  };
+  e.name = entry.name;
+  e.evaluations_per_step = entry.evaluations_per_step;
+  e.make = entry.make;
+  switch (entry.source) {
+    case engines::DynamicsSource::Core: e.name = "core-" + entry.name; break;
+    case engines::DynamicsSource::Bullet: set_bullet_range(e, s.bullet); break;
+    case engines::DynamicsSource::Outside:
+      e.door = entry.outside_engine->door();
+      e.door_chunk = kOutsideChunk;
+      e.max_n = s.outside.max_side;
+      e.max_steps = s.outside.max_steps;
+      break;
+  }
   return e;
 }
 
-std::vector<TradeoffEngine> tradeoff_engines(const Settings& s) {
-  std::vector<TradeoffEngine> engines;
-  for (IntegratorKind k : {IntegratorKind::Euler, IntegratorKind::Symplectic, IntegratorKind::Midpoint, IntegratorKind::RK4})
-    engines.push_back(core_tradeoff_engine(k));
-#ifdef TECIDO_HAVE_REFERENCE
-  for (TradeoffEngine& e : bullet_tradeoff_engines(s)) engines.push_back(std::move(e));
-#else
-  (void)s;
-#endif
-  return engines;
+TradeoffEngine core_tradeoff_engine(IntegratorKind kind) {
+  return tradeoff_engine(engines::core_dynamics_entry(kind), Settings{});
+}
+
+std::vector<TradeoffEngine> tradeoff_engines(const Settings& s, const SuiteContext* ctx) {
+  engines::DynamicsSources sources;
+  sources.core = sources.bullet = sources.outside = true;
+  std::vector<TradeoffEngine> out;
+  for (const engines::DynamicsEntry& d : engines::dynamics_engines(sources, ctx ? ctx->outside.get() : nullptr, s.classic))
+    if (d.source != engines::DynamicsSource::Outside || ctx->selects(d.name)) out.push_back(tradeoff_engine(d, s));
+  return out;
 }
 
 bool skipped(const TradeoffEngine& e, int n, std::size_t j) {

@@ -135,7 +135,7 @@ std::string core_findings(const std::vector<SizeAnalysis>& sizes, const std::vec
 std::string bullet_findings(const std::vector<SizeAnalysis>& sizes, const std::vector<TradeoffEngine>& engines,
                             const Settings& s) {
   if (!has_engine(engines, "bullet-deformable"))
-    return "Bullet's engines join this comparison in the reference build (TECIDO_REFERENCE).\n";
+    return "Bullet's engines are not among the engines run.\n";
   const BulletRange& r = s.bullet;
   return fmt::format("Bullet 3.24 (double build) joins the comparison in both kinds. To keep the suite's time within "
                      "bounds its engines run only on cloths of at most {}^2 nodes ({}^2 for the implicit, {}^2 for the "

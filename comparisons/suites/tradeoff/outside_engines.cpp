@@ -1,26 +1,16 @@
 #include "comparisons/suites/tradeoff/outside_engines.h"
 
+#include "comparisons/engines/dynamics_engines.h"
+
 #include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>
-#include <stdexcept>
 
 namespace tecido::suites::tradeoff {
 
 TradeoffEngine outside_tradeoff_engine(const outside::OutsideEnginePtr& engine, const Settings& s) {
-  TradeoffEngine e;
-  e.name = engine->name();
-  e.door = engine->door();
-  e.door_chunk = kOutsideChunk;
-  e.max_n = s.outside.max_side;
-  e.max_steps = s.outside.max_steps;
-  e.make = [engine](const Scene& scene) {
-    outside::Creation c = engine->create(scene);
-    if (!c.simulation) throw std::runtime_error(outside::not_modelled_line(engine->name(), c.refusal));
-    return std::move(c.simulation);
-  };
-  return e;
+  return tradeoff_engine(engines::outside_dynamics_entry(engine), s);
 }
 
 std::string outside_check_name(int n, const std::string& engine) {

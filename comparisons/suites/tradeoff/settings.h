@@ -2,6 +2,8 @@
 /// What the `tradeoff` suite runs: its own settings (the tolerance file holds only the bands of its
 /// checks, /tradeoff/...). Changing these changes the work done, which runs count and which points
 /// are rerun, so they live here, next to the code, and the report prints them.
+#include "comparisons/engines/classic_calibration.h"
+
 #include <vector>
 
 namespace tecido::suites::tradeoff {
@@ -31,16 +33,8 @@ struct OutsideRange {
   int max_steps = 0;  ///< 0: every swept step
 };
 
-/// How the classic soft body's kLST is calibrated for each (cloth, step, sweeps) it runs at
-/// (reference/klst_calibration.h): settling damping at a fixed rate, a rest speed, a sag match
-/// and a time limit. A 1 % sag match (2.5 mm on the 16^2 curtain's 0.25 m) is far inside the
-/// classic body's dynamic mismatch with the spring cloth.
-struct ClassicCalibration {
-  double kdp_rate = 6.4;             ///< kDP = min(0.5, kdp_rate h) while settling [1/s]
-  double rest_speed = 1e-4;          ///< [m/s]
-  double relative_tolerance = 1e-2;  ///< the calibrator's stopping rule
-  double max_time = 30.0;            ///< simulated time per settle at most [s]
-};
+/// How the classic soft body's kLST is calibrated (the registry's engine, classic_calibration.h).
+using ClassicCalibration = engines::ClassicCalibration;
 
 struct Settings {
   std::vector<Size> sizes = {{16, 5}, {32, 5}, {64, 4}, {128, 2}};  ///< {16, 5}, {32, 4} with --quick

@@ -2,7 +2,6 @@
 
 #include "comparisons/suites/tradeoff/cases.h"
 #include "comparisons/suites/tradeoff/curtain.h"
-#include "comparisons/engines/outside/outside_engines.h"
 #include "comparisons/suites/tradeoff/findings.h"
 #include "comparisons/suites/tradeoff/outside_engines.h"
 #include "comparisons/suites/tradeoff/points.h"
@@ -163,10 +162,7 @@ Sweep tradeoff_sweep(const SuiteContext& ctx) {
   auto plan = std::make_shared<Plan>();
   plan->ctx = ctx;
   plan->settings = settings(ctx.quick);
-  plan->engines = tradeoff_engines(plan->settings);
-  if (ctx.outside)
-    for (const auto& e : ctx.outside->with(&outside::Capabilities::dynamics))
-      if (ctx.selects(e->name())) plan->engines.push_back(outside_tradeoff_engine(e, plan->settings));
+  plan->engines = tradeoff_engines(plan->settings, &ctx);
   for (const Size& z : plan->settings.sizes) {
     plan->scenes.push_back(hanging_cloth(z.n));
     plan->swept.push_back(swept_steps(plan->scenes.back(), z.steps));

@@ -8,8 +8,8 @@
 /// bit-for-bit reproducible.
 ///
 /// Layout: settings.h (what runs), curtain.* (the scene), theory.* (the step sweep, the reference's
-/// error estimate), engines.*, bullet_engines.* and outside_engines.* (who runs; outside engines
-/// from --plugin and --engine-cmd), reference_solution.* (the untimed runs), cases.* (case indexing
+/// error estimate), engines.* and outside_engines.* (who runs, from the one registry of dynamics
+/// engines, comparisons/engines/dynamics_engines.h; outside engines from --plugin and --engine-cmd), reference_solution.* (the untimed runs), cases.* (case indexing
 /// and the two case groups), points.* and pareto.* (the cost/error plane and its front),
 /// distances.*, size_analysis.*, tradeoff_report.* (tables, data files, plots), findings.* (prose
 /// from the tables); this file declares the checks and assembles.

@@ -5,10 +5,10 @@
 // (comparisons/io/atomic_file.h: content goes to <target>.tmp.<pid>, then is renamed).
 #include "tests/support/cli_runner.h"
 
-#include "core/cloth/cloth_builder.h"
-#include "core/cloth/self_collision_response.h"
-#include "core/dynamics/simulation.h"
 #include "core/geometry/bounded_plane.h"
+#include "core/scene/cloth_builder.h"
+#include "core/simulation/self_collision_response.h"
+#include "core/simulation/simulation.h"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>

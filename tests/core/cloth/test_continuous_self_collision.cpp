@@ -3,10 +3,10 @@
 // on random meshes and on recorded cloth frames; on a sheet passing through another within one
 // step (both frames intersection-free, so discrete self-collision sees nothing) it must find
 // every crossing, worked out independently in 2-D.
-#include "core/cloth/cloth_builder.h"
+#include "core/scene/cloth_builder.h"
 #include "core/cloth/continuous_self_collision.h"
 #include "core/cloth/self_collision.h"
-#include "core/dynamics/simulation.h"
+#include "core/simulation/simulation.h"
 #include "core/geometry/ccd/ccd.h"
 #include "core/geometry/ccd/batch/stages.h"
 

@@ -1,9 +1,9 @@
 // The seed's edge modes (section 3.1.3, fig. 20; edge_response.h) on a hand-built 5 x 5 grid:
 // p- and p+ from the border distances, the three push directions, and the velocity change
 // strength * dt / m applied once per particle, never to a pinned one.
-#include "core/cloth/cloth_builder.h"
 #include "core/cloth/edge_response.h"
 #include "core/cloth/mesh_topology.h"
+#include "core/scene/cloth_builder.h"
 
 #include <gtest/gtest.h>
 

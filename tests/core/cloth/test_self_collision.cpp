@@ -2,10 +2,10 @@
 // exactly the brute-force pair set, on frames recorded from a cloth crumpling in a circling
 // wind (tree built on the rest shape, then refitted) and on seeded random triangle soups,
 // including touching and coplanar configurations.
-#include "core/cloth/cloth_builder.h"
 #include "core/cloth/self_collision.h"
-#include "core/cloth/self_collision_response.h"
-#include "core/dynamics/simulation.h"
+#include "core/scene/cloth_builder.h"
+#include "core/simulation/self_collision_response.h"
+#include "core/simulation/simulation.h"
 
 #include <gtest/gtest.h>
 

@@ -4,9 +4,9 @@
 //  - tri_tri_reject8 (batched first plane test): a set bit must mean tri_tri_intersect is
 //    false, on random, touching, coplanar and scaled triangle pairs.
 // On a CPU without AVX-512F both checks reduce to the portable path and pass trivially.
-#include "core/cloth/cloth_builder.h"
 #include "core/cloth/triangle_bvh.h"
 #include "core/geometry/tri_tri_intersect.h"
+#include "core/scene/cloth_builder.h"
 
 #include <gtest/gtest.h>
 

@@ -4,9 +4,9 @@
 // through the corner. The same with the box moving and the spring at rest, with the box given as
 // a mesh, and a spring bridging two top edges under gravity coming to rest without cutting in or
 // gaining energy.
-#include "core/dynamics/simulation.h"
 #include "core/geometry/box_mesh.h"
 #include "core/geometry/segment_box.h"
+#include "core/simulation/simulation.h"
 
 #include <gtest/gtest.h>
 

@@ -2,7 +2,7 @@
 // harmonic oscillator (observed global order from step halving).
 #include "core/dynamics/force_model.h"
 #include "core/dynamics/integrator.h"
-#include "core/dynamics/simulation.h"
+#include "core/simulation/simulation.h"
 
 #include <gtest/gtest.h>
 

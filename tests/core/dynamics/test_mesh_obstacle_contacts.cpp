@@ -2,9 +2,9 @@
 // triangle (time and rebound), two-sided triangles and a particle that goes round one before it
 // comes back through it, a closed box mesh against the analytic box, a keyframed triangle rising
 // through a particle at rest, and sliding across the diagonal of a box mesh's top face.
-#include "core/dynamics/simulation.h"
 #include "core/geometry/box_mesh.h"
 #include "core/geometry/orient_predicates.h"
+#include "core/simulation/simulation.h"
 
 #include <gtest/gtest.h>
 

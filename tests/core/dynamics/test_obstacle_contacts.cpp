@@ -5,9 +5,9 @@
 // steps up to 10 s and a box sweeping through particles: never a step ending inside. Spheres off the
 // origin, still or moving, at steps up to 10 s; a particle sliding over a sphere without chattering;
 // a spring grid on an off-centre sphere never left inside by rounding.
-#include "core/dynamics/simulation.h"
 #include "core/geometry/segment_box.h"
 #include "core/geometry/segment_sphere.h"
+#include "core/simulation/simulation.h"
 
 #include <gtest/gtest.h>
 

@@ -1,7 +1,7 @@
 // Plane contact in the running engine: bisection time of contact vs the analytic root,
 // no tunnelling at any step, restitution (elastic branch), friction to rest (static branch),
 // the corner of two planes, and the event cap being reported.
-#include "core/dynamics/simulation.h"
+#include "core/simulation/simulation.h"
 
 #include <gtest/gtest.h>
 

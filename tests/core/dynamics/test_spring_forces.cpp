@@ -2,9 +2,9 @@
 // implementation of eq. 10 written here, and against core's plain loop (accumulate_spring_forces),
 // for every kernel the CPU supports: random cloths with damping and pins, arbitrary extra
 // springs (short runs, reversed ends, coincident ends), runs longer than one block.
-#include "core/cloth/cloth_builder.h"
 #include "core/dynamics/force_model.h"
 #include "core/dynamics/packed_springs.h"
+#include "core/scene/cloth_builder.h"
 
 #include <gtest/gtest.h>
 

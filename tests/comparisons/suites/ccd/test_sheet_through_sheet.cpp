@@ -5,8 +5,8 @@
 // by the exact referee between consecutive frames.
 #include "comparisons/suites/ccd/sheet_through_sheet.h"
 
-#include "core/cloth/self_collision_response.h"
-#include "core/dynamics/simulation.h"
+#include "core/simulation/self_collision_response.h"
+#include "core/simulation/simulation.h"
 
 #include <gtest/gtest.h>
 

@@ -30,11 +30,7 @@ std::vector<std::string> names(const std::vector<Check>& checks) {
   return out;
 }
 
-#ifdef TECIDO_HAVE_REFERENCE
 constexpr std::size_t kBulletCases = 4, kBulletChecks = 8;
-#else
-constexpr std::size_t kBulletCases = 0, kBulletChecks = 0;
-#endif
 
 TEST(DriftSuite, CaseTableIsScenesTimesIntegratorsThenTheBulletGroups) {
   const auto cases = drift::drift_cases(drift::settings(true), 7);
@@ -43,12 +39,10 @@ TEST(DriftSuite, CaseTableIsScenesTimesIntegratorsThenTheBulletGroups) {
   EXPECT_EQ(cases[1].label, "two-body-3d/symplectic");
   EXPECT_EQ(cases[3].label, "two-body-3d/rk4");
   EXPECT_EQ(cases[4].label, "free-cloth/euler");
-#ifdef TECIDO_HAVE_REFERENCE
   EXPECT_EQ(cases[8].label, "twin");
   EXPECT_EQ(cases[9].label, "falling");
   EXPECT_EQ(cases[10].label, "classic");
   EXPECT_EQ(cases[11].label, "wind");
-#endif
 }
 
 TEST(DriftSuite, ChecksAreDeclaredFromSettingsWithBandsFromTheFile) {
@@ -71,7 +65,6 @@ TEST(DriftSuite, ChecksAreDeclaredFromSettingsWithBandsFromTheFile) {
   };
   EXPECT_EQ(find(ca, "drift/two-body-3d/rk4/angular_momentum").hi, 1e-12);
   EXPECT_EQ(find(cb, "drift/two-body-3d/rk4/angular_momentum").hi, changed(1e-12));
-#ifdef TECIDO_HAVE_REFERENCE
   // Bands scaled by the step: the file holds the number of steps.
   const Check ct = find(ca, "drift/falling/twin_contact_time_error");
   EXPECT_DOUBLE_EQ(ct.hi, 2.0 * s.twin_dt);
@@ -79,7 +72,6 @@ TEST(DriftSuite, ChecksAreDeclaredFromSettingsWithBandsFromTheFile) {
   const Check cr = find(ca, "drift/classic/load_x2/sag_ratio");
   EXPECT_DOUBLE_EQ(cr.lo, 0.5 - 0.02);
   EXPECT_DOUBLE_EQ(cr.hi, 0.5 + 0.02);
-#endif
 }
 
 TEST(DriftSuite, PlantedFailuresFailTheirChecksWithAReason) {

@@ -5,7 +5,7 @@
 
 #include "comparisons/suites/drift/invariants.h"
 #include "core/dynamics/force_model.h"
-#include "core/dynamics/simulation.h"
+#include "core/simulation/simulation.h"
 
 #include <gtest/gtest.h>
 

@@ -3,7 +3,7 @@
 // run on a parabola.
 #include "comparisons/suites/plane/theory.h"
 
-#include "core/dynamics/simulation.h"
+#include "core/simulation/simulation.h"
 
 #include <gtest/gtest.h>
 

@@ -34,11 +34,7 @@ TEST(TradeoffSuite, ChecksAreDeclaredFromTheSettingsWithBandsFromTheFile) {
   const CheckList a = tradeoff::declare_tradeoff_checks(s, engines, tradeoff_tolerances(false));
   const CheckList b = tradeoff::declare_tradeoff_checks(s, engines, tradeoff_tolerances(true));
   EXPECT_EQ(names(a.finish()), names(b.finish()));
-#ifdef TECIDO_HAVE_REFERENCE
   EXPECT_EQ(a.size(), 2 * 5u);  // conditioning, reference error and order, front size, twin vs core
-#else
-  EXPECT_EQ(a.size(), 2 * 4u);
-#endif
   for (const Check& c : a.finish()) EXPECT_FALSE(c.tolerance.empty()) << c.name;
   // front_size's upper end is the number of points run on the size (settings only).
   for (const Check& c : a.finish()) {

@@ -1,4 +1,4 @@
-#include "core/cloth/self_collision_response.h"
+#include "core/simulation/self_collision_response.h"
 
 #include "core/cloth/continuous_impulse.h"
 #include "core/cloth/edge_response.h"

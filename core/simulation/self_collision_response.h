@@ -22,7 +22,7 @@
 #include "core/cloth/mesh_topology.h"
 #include "core/cloth/self_collision.h"
 #include "core/cloth/self_collision_settings.h"
-#include "core/dynamics/simulation.h"
+#include "core/simulation/simulation.h"
 
 #include <memory>
 

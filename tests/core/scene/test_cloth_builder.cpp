@@ -1,9 +1,9 @@
 // The cloth builder (seed 2.1, 3.1.2): masses split by area, spring families counted by hand,
 // internal forces summing to zero, and a hanging cloth that comes to rest only with air drag.
-#include "core/cloth/cloth_builder.h"
 #include "core/cloth/mesh_topology.h"
 #include "core/dynamics/force_model.h"
-#include "core/dynamics/simulation.h"
+#include "core/scene/cloth_builder.h"
+#include "core/simulation/simulation.h"
 
 #include <gtest/gtest.h>
 

@@ -1,15 +1,16 @@
 #pragma once
 /// One interface for every engine that steps a core Scene's particles and springs: core itself
-/// (comparisons/engines/core_dynamics.h), Bullet's deformable world and classic soft body
-/// (bullet_deformable.h, bullet_softbody.h), and outside engines. Suites drive them alike: step,
-/// read positions and velocities in core's numbering, and list what the scene asks for that the
-/// engine does not model, so a difference in modelling is reported, never hidden.
+/// (core_dynamics.h), Bullet's deformable world and classic soft body (bullet_dynamics.h, over the
+/// reference adapters), and outside engines (outside/). Suites drive them alike: step, read
+/// positions and velocities in core's numbering, and list what the scene asks for that the engine
+/// does not model, so a difference in modelling is reported, never hidden. The suites find them
+/// in one registry (dynamics_engines.h).
 #include "core/geometry/types.h"
 
 #include <string>
 #include <vector>
 
-namespace tecido::reference {
+namespace tecido::engines {
 
 class DynamicsEngine {
  public:
@@ -35,4 +36,4 @@ class DynamicsEngine {
   virtual long long steps_done() const = 0;
 };
 
-}  // namespace tecido::reference
+}  // namespace tecido::engines

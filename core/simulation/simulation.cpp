@@ -1,4 +1,4 @@
-#include "core/dynamics/simulation.h"
+#include "core/simulation/simulation.h"
 
 #include "core/geometry/plane_side.h"
 #include "core/geometry/segment_plane.h"

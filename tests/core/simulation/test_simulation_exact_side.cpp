@@ -1,7 +1,7 @@
 // The simulation's side bookkeeping uses the exact side sign: a step that ends exactly on a
 // tilted plane, where the rounded side still says "strictly on its side", is a contact in that
 // very step (the rounded prefilter skipped it and found the contact one step late).
-#include "core/dynamics/simulation.h"
+#include "core/simulation/simulation.h"
 
 #include <gtest/gtest.h>
 

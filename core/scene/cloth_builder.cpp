@@ -1,4 +1,4 @@
-#include "core/cloth/cloth_builder.h"
+#include "core/scene/cloth_builder.h"
 
 namespace tecido {
 
