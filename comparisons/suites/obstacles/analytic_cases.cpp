@@ -17,7 +17,6 @@ namespace tecido::suites::obstacles {
 
 namespace {
 
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 Obstacle sphere(const Vec3& c, double r) {
   Obstacle o;

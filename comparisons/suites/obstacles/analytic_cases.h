@@ -5,10 +5,14 @@
 #include "comparisons/suites/obstacles/settings.h"
 #include "core/geometry/obstacle.h"
 
+#include <limits>
 #include <string>
 #include <vector>
 
 namespace tecido::suites::obstacles {
+
+/// A value a case did not measure (it failed or does not apply): NaN.
+inline constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 /// How far x lies inside obstacle o at time t (its pose then, obstacle_pose.h): r - |x - c| for a
 /// sphere, min_i (h_i - |q_i|) for a box; <= 0 outside or on the surface. 0 for a mesh (no inside).

@@ -16,7 +16,6 @@ namespace tecido::suites::obstacles {
 
 namespace {
 
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 /// What the suite measures of one engine's run, step end by step end.
 struct Track {
