@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
 # The README's test command: installs what is missing, builds (release), runs every test with
-# ctest, then builds the asan preset (ASan + UBSan) and runs the tests again under it, then (on CI,
+# ctest, then builds the asan preset (ASan + UBSan) and runs the tests again under it (all but the
+# 13 that repeat a run another test makes, to compare two runs: the band-perturbation tests and the
+# determinism tests; CMakePresets.json's asan test filter), then (on CI,
 # or when TECIDO_FUZZ_SECONDS is set) builds and runs the fuzz targets. Each stage's wall time is
 # printed as it ends ("stage: NAME S s") and all of them again at the end, so a CI log shows where
 # the time goes.
