@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Builds the libFuzzer targets of fuzz/ (clang, -fsanitize=fuzzer,address,undefined) in
-# build-fuzz/ and runs each for SECONDS seconds (default 10; about a minute and a half for all).
+# build-fuzz/ and runs each for SECONDS seconds (default 10 s per target).
 #   bash scripts/fuzz.sh [SECONDS] [TARGET...]      (or TECIDO_FUZZ_SECONDS=SECONDS)
 # Each target starts from a copy of its seed corpus data/fuzz/<target>/ (data/ is never
 # written) in build-fuzz/corpus/<target>/, which keeps what the fuzzer finds between runs.
