@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Builds the libFuzzer targets of fuzz/ (clang, -fsanitize=fuzzer,address,undefined) in
-# build-fuzz/ and runs each for SECONDS seconds (default 10 s per target).
+# build-fuzz/ and runs each for SECONDS seconds (default 10 s per target), FUZZ_JOBS targets at
+# a time (default: the number of cores; each target is one process, so two cores run two).
 #   bash scripts/fuzz.sh [SECONDS] [TARGET...]      (or TECIDO_FUZZ_SECONDS=SECONDS)
 # Each target starts from a copy of its seed corpus data/fuzz/<target>/ (data/ is never
 # written) in build-fuzz/corpus/<target>/, which keeps what the fuzzer finds between runs.
@@ -47,14 +48,11 @@ fi
 
 export ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1:abort_on_error=1:allocator_may_return_null=1}
 export UBSAN_OPTIONS=${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}
-failed=()
-for t in "${TARGETS[@]}"; do
-  [ -n "$t" ] || continue
-  corpus="$BUILD/corpus/$t" artifacts="$BUILD/artifacts/$t"
+# run_target T: runs target T for SECS seconds; prints its figures, or its finding and exits 1.
+run_target() {
+  local t=$1 corpus="$BUILD/corpus/$1" artifacts="$BUILD/artifacts/$1" dict=() timeout=$TIMEOUT
   mkdir -p "$corpus" "$artifacts"
   cp -n data/fuzz/"$t"/* "$corpus"/ 2>/dev/null || true
-  dict=()
-  timeout=$TIMEOUT
   case "$t" in *_vs_exact | fuzz_selfcollide_continuous) timeout=$TIMEOUT_EXACT ;; esac
   case "$t" in
     fuzz_obj) dict=(-dict=data/fuzz/obj.dict) ;;
@@ -62,23 +60,39 @@ for t in "${TARGETS[@]}"; do
     fuzz_tritri_vs_exact | fuzz_ccd_vs_exact | fuzz_plane_vs_exact | fuzz_selfcollide_continuous | fuzz_plugin_table) ;;
     fuzz_ccd_queries_csv) dict=(-dict=data/fuzz/csv.dict) ;;
     fuzz_obstacles)  # a JSON value, then OBJ files after lines "%%%"
-      cat data/fuzz/json.dict data/fuzz/obj.dict > "$BUILD/obstacles.dict"
-      echo '"%%%\x0a"' >> "$BUILD/obstacles.dict"
       dict=(-dict="$BUILD/obstacles.dict") ;;
     *) dict=(-dict=data/fuzz/json.dict) ;;
   esac
-  echo "fuzz: $t for ${SECS} s (corpus $corpus)" >&2
   if "$BUILD/bin/$t" "$corpus" "${dict[@]}" -max_total_time="$SECS" -timeout="$timeout" -rss_limit_mb="$RSS_MB" \
       -malloc_limit_mb="$RSS_MB" -max_len="$MAX_LEN" -artifact_prefix="$artifacts/" -print_final_stats=1 \
       >"$BUILD/artifacts/$t.log" 2>&1; then
-    grep -E '^stat::(number_of_executed_units|peak_rss_mb|slowest_unit_time_sec)|^Done' "$BUILD/artifacts/$t.log" | tr '\n' ' ' >&2
-    echo >&2
+    echo "fuzz: $t $(grep -E '^stat::(number_of_executed_units|peak_rss_mb|slowest_unit_time_sec)|^#[0-9]+ *DONE' "$BUILD/artifacts/$t.log" | tr '\n' ' ')" >&2
   else
     echo "fuzz: $t FAILED; log $BUILD/artifacts/$t.log, input:" >&2
     grep -E 'Test unit written to|FINDING|ERROR|SUMMARY' "$BUILD/artifacts/$t.log" | head -5 >&2
-    failed+=("$t")
+    return 1
   fi
+}
+
+cat data/fuzz/json.dict data/fuzz/obj.dict > "$BUILD/obstacles.dict"
+echo '"%%%\x0a"' >> "$BUILD/obstacles.dict"
+# FUZZ_JOBS targets at a time (default: the number of cores), each for SECS seconds of its own.
+FUZZ_JOBS=${FUZZ_JOBS:-$JOBS}
+echo "fuzz: ${#TARGETS[@]} targets, ${SECS} s each, $FUZZ_JOBS at a time" >&2
+failed=()
+pids=() names=()
+# wait_one: waits for the oldest running target and records it if it failed.
+wait_one() {
+  if ! wait "${pids[0]}"; then failed+=("${names[0]}"); fi
+  pids=("${pids[@]:1}") names=("${names[@]:1}")
+}
+for t in "${TARGETS[@]}"; do
+  [ -n "$t" ] || continue
+  [ ${#pids[@]} -lt "$FUZZ_JOBS" ] || wait_one
+  run_target "$t" &
+  pids+=($!) names+=("$t")
 done
+while [ ${#pids[@]} -gt 0 ]; do wait_one; done
 if [ ${#failed[@]} -gt 0 ]; then
   echo "fuzz: findings in ${failed[*]}" >&2
   exit 1
