@@ -1,16 +1,16 @@
 #!/usr/bin/env bash
-# Builds the libFuzzer targets of fuzz/ (clang, -fsanitize=fuzzer,address,undefined) in
-# build-fuzz/ and runs each for SECONDS seconds (default 10 s per target), FUZZ_JOBS targets at
+# Builds the libFuzzer targets of fuzz/ (clang, -fsanitize=fuzzer,address,undefined) in the asan
+# preset's folder build-asan/ and runs each for SECONDS seconds (default 10 s per target), FUZZ_JOBS targets at
 # a time (default: the number of cores; each target is one process, so two cores run two).
 #   bash scripts/fuzz.sh [SECONDS] [TARGET...]      (or TECIDO_FUZZ_SECONDS=SECONDS)
 # Each target starts from a copy of its seed corpus data/fuzz/<target>/ (data/ is never
-# written) in build-fuzz/corpus/<target>/, which keeps what the fuzzer finds between runs.
+# written) in build-asan/corpus/<target>/, which keeps what the fuzzer finds between runs.
 # A crash, leak, UBSan report, timeout or out-of-memory is saved under
-# build-fuzz/artifacts/<target>/ and makes the script exit 1 after running every target.
+# build-asan/artifacts/<target>/ and makes the script exit 1 after running every target.
 # Bounded work is part of the check: inputs up to MAX_LEN bytes (far past the nesting limit of
 # comparisons/io/limits.h) must each run within TIMEOUT seconds and RSS_MB of memory, which a
 # reader linear in its input meets with a wide margin and a quadratic one does not.
-# Reproduce one with: build-fuzz/bin/<target> build-fuzz/artifacts/<target>/crash-<sha1>
+# Reproduce one with: build-asan/bin/<target> build-asan/artifacts/<target>/crash-<sha1>
 # Every finding a target has made is fixed and kept as a regress_* seed in data/fuzz/<target>/,
 # which each run replays first.
 set -euo pipefail
@@ -18,17 +18,14 @@ cd "$(dirname "$0")/.."
 SECS=${1:-${TECIDO_FUZZ_SECONDS:-10}}
 [ $# -gt 0 ] && shift
 JOBS=${JOBS:-$(nproc)}
-BUILD=build-fuzz
+BUILD=build-asan
 if ! command -v clang++ >/dev/null; then
   echo "fuzz: clang++ not found (bash scripts/setup.sh installs clang and libclang-rt-14-dev)" >&2
   exit 2
 fi
-GEN=()
-LAUNCHER=()
-if command -v ccache >/dev/null; then LAUNCHER=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache -DCMAKE_C_COMPILER_LAUNCHER=ccache); fi
-if [ ! -f "$BUILD/CMakeCache.txt" ] && command -v ninja >/dev/null; then GEN=(-G Ninja); fi
-CC=clang CXX=clang++ cmake -S . -B "$BUILD" "${GEN[@]}" "${LAUNCHER[@]}" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O2 -g1 -DNDEBUG" \
-  -DTECIDO_FUZZ=ON -DTECIDO_BENCH=OFF -DBUILD_TESTING=OFF >/dev/null
+# The asan preset's build (clang, ASan + UBSan, -O1): the fuzz targets and the sanitized tests
+# share its libraries, compiled once with the coverage instrumentation the fuzzer needs.
+cmake --preset asan >/dev/null
 if [ $# -gt 0 ]; then TARGETS=("$@"); else mapfile -t TARGETS < "$BUILD/fuzz_targets.txt"; fi
 # Named targets: build those only (the reader targets need less than the whole library set).
 if [ $# -gt 0 ]; then cmake --build "$BUILD" --target "${TARGETS[@]}" -j "$JOBS"; else cmake --build "$BUILD" --target fuzz -j "$JOBS"; fi

@@ -1,10 +1,10 @@
 #include "comparisons/io/ccd_queries.h"
 
+#include "comparisons/io/entry_id.h"
 #include "comparisons/io/text_file.h"
 
 #include <limits>
 #include <string_view>
-#include <unordered_map>
 
 namespace tecido::io {
 
@@ -26,13 +26,6 @@ std::array<Vec3, 4> read_points(const JsonReader& r, const Json& j, const std::s
   std::array<Vec3, 4> x;
   for (std::size_t k = 0; k < 4; ++k) x[k] = r.vec3(j[k], child(w, k), std::numeric_limits<double>::max());
   return x;
-}
-
-/// The entry's id: the string, a non-string id's JSON text, or the index when absent.
-std::string read_id(const Json& e, std::size_t k) {
-  if (!e.contains("id")) return std::to_string(k);
-  const Json& id = e["id"];
-  return id.is_string() ? id.get<std::string>() : id.dump();
 }
 
 // ---- CSV -------------------------------------------------------------------------------------
@@ -121,30 +114,15 @@ std::string line_name(std::size_t n) { return "line " + std::to_string(n); }
 }  // namespace
 
 std::vector<CcdQueryEntry> ccd_queries_from_json(const Json& doc, const std::string& file) {
-  JsonReader r(file);
-  const Json& queries = r.require_array(r.require(doc, "", "queries"), "/queries");
-  if (queries.size() > kMaxCcdQueries)
-    r.fail("/queries", "too many queries: " + std::to_string(queries.size()) + " (at most " +
-                           std::to_string(kMaxCcdQueries) + ")");
-  std::vector<CcdQueryEntry> out;
-  out.reserve(queries.size());
-  std::unordered_map<std::string, std::size_t> first;  // id -> entry index
-  for (std::size_t k = 0; k < queries.size(); ++k) {
-    const std::string w = child("/queries", k);
-    const Json& e = r.require_object(queries[k], w);
+  return read_entries<CcdQueryEntry>(doc, file, "queries", kMaxCcdQueries,
+                                     [](const JsonReader& r, const Json& e, const std::string& w) {
     CcdQueryEntry q;
-    q.id = read_id(e, k);
-    const auto [it, fresh] = first.emplace(q.id, k);
-    if (!fresh)
-      r.fail(e.contains("id") ? child(w, "id") : w,
-             "duplicate id \"" + q.id + "\" (first at " + child("/queries", it->second) + ")");
     q.query.kind = read_kind(r, r.require(e, w, "kind"), child(w, "kind"));
     q.query.x0 = read_points(r, r.require(e, w, "t0"), child(w, "t0"));
     q.query.x1 = read_points(r, r.require(e, w, "t1"), child(w, "t1"));
     if (e.contains("truth")) q.truth = r.boolean(e["truth"], child(w, "truth"));
-    out.push_back(std::move(q));
-  }
-  return out;
+    return q;
+  });
 }
 
 std::vector<CcdQueryEntry> load_ccd_queries_json(const std::string& path) {

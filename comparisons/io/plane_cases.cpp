@@ -9,23 +9,13 @@
 namespace tecido::io {
 
 std::vector<PlaneCase> plane_cases_from_json(const Json& doc, const std::string& file) {
-  JsonReader r(file);
-  const Json& cases = r.require_array(r.require(doc, "", "cases"), "/cases");
-  r.at_most(cases.size(), "/cases", kMaxCases, "cases");
-  UniqueIds ids;
-  std::vector<PlaneCase> out;
-  out.reserve(cases.size());
-  for (std::size_t k = 0; k < cases.size(); ++k) {
-    const std::string w = child("/cases", k);
-    const Json& c = r.require_object(cases[k], w);
+  return read_entries<PlaneCase>(doc, file, "cases", kMaxCases, [](const JsonReader& r, const Json& c, const std::string& w) {
     PlaneCase pc;
-    pc.id = ids.read(r, c, w, k);
     pc.plane = read_bounded_plane(r, r.require(c, w, "plane"), child(w, "plane"), /*strict=*/false);
     pc.from = r.vec3(r.require(c, w, "from"), child(w, "from"), kMaxCoordinate);
     pc.to = r.vec3(r.require(c, w, "to"), child(w, "to"), kMaxCoordinate);
-    out.push_back(std::move(pc));
-  }
-  return out;
+    return pc;
+  });
 }
 
 std::vector<PlaneCase> load_plane_cases(const std::string& path) { return plane_cases_from_json(read_json_file(path), path); }

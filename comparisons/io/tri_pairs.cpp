@@ -15,22 +15,12 @@ Triangle read_triangle(const JsonReader& r, const Json& j, const std::string& w)
 }  // namespace
 
 std::vector<TriPair> tri_pairs_from_json(const Json& doc, const std::string& file) {
-  JsonReader r(file);
-  const Json& pairs = r.require_array(r.require(doc, "", "pairs"), "/pairs");
-  r.at_most(pairs.size(), "/pairs", kMaxPairs, "pairs");
-  UniqueIds ids;
-  std::vector<TriPair> out;
-  out.reserve(pairs.size());
-  for (std::size_t k = 0; k < pairs.size(); ++k) {
-    const std::string w = child("/pairs", k);
-    const Json& p = r.require_object(pairs[k], w);
+  return read_entries<TriPair>(doc, file, "pairs", kMaxPairs, [](const JsonReader& r, const Json& p, const std::string& w) {
     TriPair tp;
-    tp.id = ids.read(r, p, w, k);
     tp.a = read_triangle(r, r.require(p, w, "a"), child(w, "a"));
     tp.b = read_triangle(r, r.require(p, w, "b"), child(w, "b"));
-    out.push_back(std::move(tp));
-  }
-  return out;
+    return tp;
+  });
 }
 
 std::vector<TriPair> load_tri_pairs(const std::string& path) { return tri_pairs_from_json(read_json_file(path), path); }

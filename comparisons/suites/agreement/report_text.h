@@ -5,6 +5,7 @@
 #include "comparisons/suites/agreement/table.h"
 
 #include <cstddef>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -17,6 +18,11 @@ std::string family_list(const std::vector<FamilyT>& families) {
   for (const FamilyT& f : families) md += "- `" + f.name + "`: " + f.about + "\n";
   return md;
 }
+
+/// The method's opening: "<random> random <unit> and <per_family> <unit> of each adversarial <group>
+/// (seed <seed>), in sweep cases of at most <block> <unit> of one <group>".
+std::string sample_sentence(long random, long per_family, std::uint64_t seed, long block, const std::string& unit,
+                            const std::string& group);
 
 /// What one tally counts (a lambda without capture converts).
 using Count = long (*)(const Tally& t);

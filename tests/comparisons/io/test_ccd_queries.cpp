@@ -102,7 +102,7 @@ TEST(CcdQueriesJson, RejectsBadInputNamingThePointer) {
       {R"({"query":[]})", "/queries", "missing required key"},
       {R"({"queries":{}})", "/queries", "expected an array"},
       {R"({"queries":[3]})", "/queries/0", "expected an object"},
-      {R"({"queries":[)" + ok + "," + ok + "]}", "/queries/1/id", "duplicate id \"a\" (first at /queries/0)"},
+      {R"({"queries":[)" + ok + "," + ok + "]}", "/queries/1/id", "duplicate id \"a\" (first at /queries/0/id)"},
       {R"({"queries":[)" + ok + ",{\"id\":\"0\"," + ok.substr(10) + "]}", "", ""},  // accepted: ids differ
       {R"({"queries":[)" + query_json("1", "face-vertex") + "]}", "/queries/0/kind", "unknown kind"},
       {R"({"queries":[)" + query_json("1", "edge-edge", "[[0,0,0],[1,0,0],[0,1,0]]") + "]}", "/queries/0/t0",
@@ -134,7 +134,7 @@ TEST(CcdQueriesJson, DuplicateIdOfAnAbsentIdNamesTheEntry) {
   // The second entry has no id, so its id is its index "1", which the first entry already took.
   const std::string text = R"({"queries":[)" + query_json(R"("1")", "edge-edge") + "," +
                            query_json(R"("x")", "edge-edge").replace(0, 10, "{") + "]}";
-  EXPECT_EQ(json_error(text).rfind("q.json: /queries/1: duplicate id \"1\" (first at /queries/0)", 0), 0u)
+  EXPECT_EQ(json_error(text).rfind("q.json: /queries/1: duplicate id \"1\" (first at /queries/0/id)", 0), 0u)
       << json_error(text);
 }
 

@@ -103,18 +103,10 @@ TEST(JsonReader, EveryJsonInputOfTheCliRejectsTheNestingBomb) {
   std::filesystem::remove_all(dir);
 }
 
-#if defined(__SANITIZE_ADDRESS__)
-#define TECIDO_ASAN 1
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
-#define TECIDO_ASAN 1
-#endif
-#endif
-
 // Memory, asserted structurally: the 400 KB bomb that grew past 20 GB is rejected by a CLI held
 // to 256 MB of address space (ulimit -v), so the reader cannot have needed more.
 TEST(JsonReader, NestingBombFitsIn256MegabytesOfAddressSpace) {
-#ifdef TECIDO_ASAN
+#ifdef TECIDO_SANITIZED
   GTEST_SKIP() << "AddressSanitizer reserves terabytes of address space; ulimit -v does not apply";
 #endif
   const auto dir = testing::temp_dir("bomb-memory");

@@ -191,7 +191,7 @@ void recut(const std::vector<std::filesystem::path>& from, int n, const std::fil
 // run is the same code path as MergedShardsEqualTheUnshardedRun above. About 5 s in a release
 // build: skipped under AddressSanitizer, where it takes minutes.
 TEST(SuiteShard, TradeoffMergeDoesNotDependOnTheSlicing) {
-#if defined(__SANITIZE_ADDRESS__)
+#ifdef TECIDO_SANITIZED
   GTEST_SKIP() << "too slow under AddressSanitizer";
 #endif
   const auto dir = testing::temp_dir("suite-shard-tradeoff");

@@ -11,7 +11,7 @@ namespace {
 
 using testing::run_cli;
 
-#if defined(__SANITIZE_ADDRESS__)
+#ifdef TECIDO_SANITIZED
 #define TECIDO_SKIP_UNDER_ASAN GTEST_SKIP() << "three quick suite runs take minutes under AddressSanitizer"
 #else
 #define TECIDO_SKIP_UNDER_ASAN (void)0

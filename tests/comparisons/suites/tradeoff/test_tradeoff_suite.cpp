@@ -104,7 +104,7 @@ TEST(TradeoffFindings, ClassicParagraphIsDerivedFromTheTable) {
 // work (every run's engine, step, status and error identical), and exit 1. Two quick runs of the
 // suite: skipped under AddressSanitizer, where each takes minutes (as SuiteShard.TradeoffMerge...).
 TEST(TradeoffSuiteCli, EveryBandChangedGivesTheSameChecksTheSameWorkAndExitOne) {
-#if defined(__SANITIZE_ADDRESS__)
+#ifdef TECIDO_SANITIZED
   GTEST_SKIP() << "too slow under AddressSanitizer";
 #endif
   const auto dir = testing::temp_dir("tradeoff-perturbed");
