@@ -6,10 +6,9 @@
 
 namespace tecido::suites::agreement {
 
-std::string sample_sentence(long random, long per_family, std::uint64_t seed, long block, const std::string& unit,
-                            const std::string& group) {
+std::string sample_sentence(const Sample& s) {
   return fmt::format("{} random {} and {} {} of each adversarial {} (seed {}), in sweep cases of at most {} {} of one {}",
-                     random, unit, per_family, unit, group, seed, block, unit, group);
+                     s.random, s.unit, s.per_family, s.unit, s.group, s.seed, s.block, s.unit, s.group);
 }
 
 std::string family_counts(const std::vector<std::string>& names, const AgreementTable& table, std::size_t e, Count count,

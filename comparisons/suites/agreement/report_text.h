@@ -19,10 +19,26 @@ std::string family_list(const std::vector<FamilyT>& families) {
   return md;
 }
 
-/// The method's opening: "<random> random <unit> and <per_family> <unit> of each adversarial <group>
-/// (seed <seed>), in sweep cases of at most <block> <unit> of one <group>".
-std::string sample_sentence(long random, long per_family, std::uint64_t seed, long block, const std::string& unit,
-                            const std::string& group);
+/// How a suite samples its cases: counts, the seed, the sweep cases' size, and the words it uses.
+struct Sample {
+  long random = 0;      ///< cases of the random family
+  long per_family = 0;  ///< cases of each adversarial family
+  std::uint64_t seed = 0;
+  long block = 0;       ///< cases per sweep case
+  std::string unit;     ///< "pairs", "cases"
+  std::string group;    ///< "family", "category"
+};
+
+/// "<random> random <unit> and <per_family> <unit> of each adversarial <group> (seed <seed>), in
+/// sweep cases of at most <block> <unit> of one <group>".
+std::string sample_sentence(const Sample& s);
+
+/// The method's opening: "<random> <unit> ... of one <group>" (the sample), then `comparison` (what
+/// each engine's answers are held against, ending with a lead-in to the list), then the families.
+template <class FamilyT>
+std::string method_opening(const Sample& s, const std::string& comparison, const std::vector<FamilyT>& families) {
+  return sample_sentence(s) + comparison + family_list(families);
+}
 
 /// What one tally counts (a lambda without capture converts).
 using Count = long (*)(const Tally& t);

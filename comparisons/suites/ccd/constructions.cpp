@@ -105,4 +105,20 @@ CcdQuery translated(const CcdQuery& q, const Vec3& d) {
   return out;
 }
 
+void rescaled_queries(Rng& r, KnownQuery (*generic)(Rng&), const std::vector<int>& scale,
+                      const std::vector<int>& offset, std::size_t count, std::vector<KnownQuery>& out) {
+  const std::size_t n = scale.size() + offset.size();
+  for (std::size_t k = 0; k < count; ++k) {
+    KnownQuery kq = generic(r);
+    const std::size_t j = k % n;
+    if (j < scale.size()) {
+      kq.q = scaled(kq.q, scale[j]);
+    } else {
+      const double d = std::ldexp(1.0, offset[j - scale.size()]);
+      kq.q = translated(kq.q, Vec3(r.below(2) ? d : -d, r.below(2) ? d : -d, r.below(2) ? d : -d));
+    }
+    out.push_back(kq);
+  }
+}
+
 }  // namespace tecido::suites::ccd

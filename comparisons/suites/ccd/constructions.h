@@ -74,4 +74,9 @@ CcdQuery scaled(const CcdQuery& q, int e);
 /// Every point moved by d.
 CcdQuery translated(const CcdQuery& q, const Vec3& d);
 
+/// `count` queries of `generic(r)`, the k-th multiplied by 2^scale[k % n] or, past the scales, moved
+/// by +-2^offset along each axis (n: both lists' sizes); both exact, so each answer stands.
+void rescaled_queries(Rng& r, KnownQuery (*generic)(Rng&), const std::vector<int>& scale,
+                      const std::vector<int>& offset, std::size_t count, std::vector<KnownQuery>& out);
+
 }  // namespace tecido::suites::ccd

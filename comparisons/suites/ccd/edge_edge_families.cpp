@@ -278,18 +278,7 @@ void ee_near_miss(Rng& r, const Settings& s, std::size_t count, std::vector<Know
 /// Huge and tiny scales: generic crossings multiplied by 2^e (e from the settings, in turn), or
 /// moved by +-2^k along each axis; both exact, so the answers stand.
 void ee_scale(Rng& r, const Settings& s, std::size_t count, std::vector<KnownQuery>& out) {
-  const std::size_t n_scale = s.scale_exponents.size(), n = n_scale + s.offset_exponents.size();
-  for (std::size_t k = 0; k < count; ++k) {
-    KnownQuery kq = ee_generic(r);
-    const std::size_t j = k % n;
-    if (j < n_scale) {
-      kq.q = scaled(kq.q, s.scale_exponents[j]);
-    } else {
-      const double d = std::ldexp(1.0, s.offset_exponents[j - n_scale]);
-      kq.q = translated(kq.q, Vec3(r.below(2) ? d : -d, r.below(2) ? d : -d, r.below(2) ? d : -d));
-    }
-    out.push_back(kq);
-  }
+  rescaled_queries(r, &ee_generic, s.scale_exponents, s.offset_exponents, count, out);
 }
 
 }  // namespace tecido::suites::ccd

@@ -21,13 +21,14 @@ const char* band_words(TErrorBand b) {
 
 std::string method_markdown(const Settings& s, std::uint64_t seed, const std::string& referee,
                             const std::vector<Category>& categories) {
-  std::string md =
-      agreement::sample_sentence(s.random_cases, s.cases_per_category, seed, s.block, "cases", "category") +
+  std::string md = agreement::method_opening(
+      {s.random_cases, s.cases_per_category, seed, s.block, "cases", "category"},
       fmt::format(": every engine's hit against the referee `{}` (CGAL/GMP rationals on the same doubles), and the "
                   "largest crossing-fraction error |t - t_exact| where both hit. ns/case: CPU time of the case's thread "
                   "per random case, while other cases run on the other cores. Categories:\n\n",
-                  referee);
-  md += agreement::family_list(categories) + "\nChecked per group of categories, each group with its band in the tolerance file "
+                  referee),
+      categories);
+  md += "\nChecked per group of categories, each group with its band in the tolerance file "
         "(/plane/<engine>_agreement_<group>): ";
   bool first = true;
   for (const CategoryGroup& g : category_groups()) {

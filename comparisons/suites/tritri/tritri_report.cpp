@@ -12,14 +12,14 @@ namespace tecido::suites::tritri {
 
 std::string method_markdown(const Settings& s, std::uint64_t seed, const std::string& referee,
                             const std::vector<Family>& families) {
-  std::string md =
-      agreement::sample_sentence(s.random_pairs, s.pairs_per_family, seed, s.block, "pairs", "family") +
+  return agreement::method_opening(
+      {s.random_pairs, s.pairs_per_family, seed, s.block, "pairs", "family"},
       fmt::format(". Each cell: pairs where the engine agrees with the referee `{}` (CGAL exact predicates) / pairs; "
                   "`n/a` = the engine gave no answer. ns/pair: CPU time of the case's thread per random pair, while "
                   "the other cases run on the other cores (the `bench` suite times the same tests alone). "
                   "Families:\n\n",
-                  referee);
-  return md + agreement::family_list(families) + "\n";
+                  referee),
+      families) + "\n";
 }
 
 std::string outside_markdown(const std::vector<outside::OutsideEnginePtr>& outside) {
