@@ -8,8 +8,8 @@
 
 namespace tecido::cli {
 
-/// `message` on one line: \n, \r, \t as escapes, other control bytes as \xNN; when longer than
-/// `max_length`, its first and last halves around " ... ".
+/// `message` on one line (io::escaped_text: \n, \r, \t as escapes, control bytes and malformed
+/// UTF-8 as \xNN); when longer than `max_length`, its first and last halves around " ... ".
 std::string one_line(std::string_view message, std::size_t max_length = 2000);
 
 /// Writes "tecido: <one_line(message)>\n" to `err`.

@@ -61,6 +61,13 @@ constexpr std::size_t kMaxMeshTriangles = std::size_t{1} << 21;
 /// Triangles an all-pairs engine (core-brute, exact) accepts: n (n - 1) / 2 = 1.3e8 pair tests.
 constexpr std::size_t kMaxBruteForceTriangles = std::size_t{1} << 14;
 
+// ---- Outside engines (--engine-cmd) ------------------------------------------------------
+/// Longest reply line of a JSON-lines engine [bytes]: the largest real reply, a step of a scene at
+/// kMaxParticles with positions and velocities (6 numbers of up to 25 characters each, about
+/// 150 MB), fits; a process that writes more without a newline is stopped there, and one that
+/// writes slower is stopped at the timeout, which bounds the whole reply.
+constexpr std::size_t kMaxReplyBytes = std::size_t{256} << 20;
+
 // ---- Command-line options ----------------------------------------------------------------
 constexpr int kMaxThreads = 1024;     ///< --threads (0 = all cores)
 constexpr int kMaxShards = 65536;     ///< n of --shard i/n

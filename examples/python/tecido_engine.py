@@ -195,7 +195,7 @@ MODELLED = set()  # features beyond particles, springs, gravity and drag: none
 def answer(req, state):
     op = req.get("op")
     if op == "hello":
-        return {"supports": ["tri_tri", "tri_tri_batch", "ccd", "ccd_batch", "dynamics"], "order": 2}
+        return {"protocol": 1, "supports": ["tri_tri", "tri_tri_batch", "ccd", "ccd_batch", "dynamics"], "order": 2}
     if op == "tri_tri":
         return {"hit": tri_tri(req["a"], req["b"])}
     if op == "tri_tri_batch":

@@ -1,5 +1,8 @@
 #include "comparisons/engines/outside/json_lines_process.h"
 
+#include "comparisons/io/escaped_text.h"
+#include "comparisons/io/limits.h"
+
 #include <cerrno>
 #include <csignal>
 #include <cstring>
@@ -20,7 +23,6 @@ using Clock = std::chrono::steady_clock;
 
 constexpr std::size_t kTailBytes = 4096;        ///< stderr kept
 constexpr std::size_t kTailShown = 600;         ///< of which messages show the last
-constexpr std::size_t kMaxLine = std::size_t(1) << 30;  ///< a longer reply is a failure
 
 /// Writing to a child that has exited must be an EPIPE error, not a signal that kills tecido.
 void ignore_sigpipe() {
@@ -69,8 +71,9 @@ pid_t spawn(const std::string& command, int in[2], int out[2], int err[2]) {
 
 }  // namespace
 
-JsonLinesProcess::JsonLinesProcess(std::string command, std::chrono::duration<double> timeout)
-    : command_(std::move(command)), timeout_(timeout) {
+JsonLinesProcess::JsonLinesProcess(std::string command, std::chrono::duration<double> timeout,
+                                   std::size_t max_reply_bytes)
+    : command_(std::move(command)), timeout_(timeout), max_reply_bytes_(max_reply_bytes) {
   ignore_sigpipe();
   int in[2], out[2], err[2];
   if (::pipe2(in, O_CLOEXEC) != 0 || ::pipe2(out, O_CLOEXEC) != 0 || ::pipe2(err, O_CLOEXEC) != 0)
@@ -151,18 +154,24 @@ void JsonLinesProcess::write_all(const std::string& data, Clock::time_point dead
 }
 
 std::string JsonLinesProcess::read_line(Clock::time_point deadline, std::chrono::duration<double> limit) {
-  for (;;) {
-    const std::size_t nl = pending_.find('\n');
+  const std::string allowance = round_trips_ == 0 ? " (start-up allowance)" : " (--engine-timeout)";
+  // The deadline bounds the whole reply, not the silence between its bytes; the newline is looked
+  // for in new bytes only, so a long reply costs its length once.
+  for (std::size_t scanned = 0;;) {
+    const std::size_t nl = pending_.find('\n', scanned);
     if (nl != std::string::npos) {
       std::string line = pending_.substr(0, nl);
       pending_.erase(0, nl + 1);
       return line;
     }
-    if (pending_.size() > kMaxLine) fail("reply line longer than 1 GiB");
+    scanned = pending_.size();
+    if (pending_.size() > max_reply_bytes_)
+      fail("a reply longer than the limit of " + std::to_string(max_reply_bytes_ >> 20) + " MiB (kMaxReplyBytes)");
+    if (Clock::now() >= deadline) fail(late_reply(limit, allowance));
     pollfd fds[2] = {{out_, POLLIN, 0}, {err_, POLLIN, 0}};
     const int n = ::poll(fds, err_ >= 0 ? 2 : 1, millis_until(deadline));
     if (n < 0 && errno == EINTR) continue;
-    if (n == 0) fail("no reply within " + seconds_text(limit) + (round_trips_ == 0 ? " (start-up allowance)" : " (--engine-timeout)"));
+    if (n == 0) fail(late_reply(limit, allowance));
     if (err_ >= 0 && fds[1].revents) drain_stderr();
     if (!fds[0].revents) continue;
     char buf[65536];
@@ -172,6 +181,12 @@ std::string JsonLinesProcess::read_line(Clock::time_point deadline, std::chrono:
                           std::string(" without a reply: ") + exit_description());
     else if (errno != EAGAIN && errno != EINTR) fail(std::string("read failed: ") + std::strerror(errno));
   }
+}
+
+std::string JsonLinesProcess::late_reply(std::chrono::duration<double> limit, const std::string& allowance) const {
+  if (pending_.empty()) return "no reply within " + seconds_text(limit) + allowance;
+  return "no whole reply within " + seconds_text(limit) + allowance + ": " + std::to_string(pending_.size()) +
+         " bytes without a newline by then";
 }
 
 void JsonLinesProcess::drain_stderr() {
@@ -224,11 +239,12 @@ std::string JsonLinesProcess::tail_line() const {
   std::string t = err_tail_;
   while (!t.empty() && (t.back() == '\n' || t.back() == '\r' || t.back() == ' ')) t.pop_back();
   if (t.size() > kTailShown) t = "..." + t.substr(t.size() - kTailShown);
+  // Lines joined by " | ", everything else the child wrote shown as text (io::escaped_text).
   std::string out;
-  for (char c : t) {
-    if (c == '\n') out += " | ";
-    else if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) out += ' ';
-    else out += c;
+  for (std::size_t start = 0; start <= t.size();) {
+    const std::size_t nl = std::min(t.find('\n', start), t.size());
+    out += (start == 0 ? "" : " | ") + io::escaped_text(std::string_view(t).substr(start, nl - start));
+    start = nl + 1;
   }
   return out;
 }

@@ -2,6 +2,7 @@
 
 #include "comparisons/engines/outside/engine_error.h"
 #include "comparisons/engines/outside/process_simulation.h"
+#include "comparisons/io/escaped_text.h"
 
 #include <algorithm>
 
@@ -76,14 +77,14 @@ Json ProcessEngine::request(const Json& req, const std::string& op, bool error_o
     reply = Json::parse(line);
   } catch (const Json::exception& e) {
     // parse_error: not JSON; out_of_range (406): a number past the range of doubles, e.g. 1e400.
-    const std::string shown = line.size() > 120 ? line.substr(0, 120) + "..." : line;
+    const std::string shown = io::escaped_text(line.substr(0, 120)) + (line.size() > 120 ? "..." : "");
     const bool overflow = dynamic_cast<const Json::out_of_range*>(&e) != nullptr;
     fail(op, std::string(overflow ? "a number in the reply is out of the range of doubles: \"" : "malformed JSON reply: \"") +
                  shown + "\"");
   }
-  if (!reply.is_object()) fail(op, "the reply is not a JSON object: " + line.substr(0, 120));
+  if (!reply.is_object()) fail(op, "the reply is not a JSON object: " + io::escaped_text(line.substr(0, 120)));
   if (!error_ok)
-    if (const std::string* e = reply_error(reply)) fail(op, "the engine answered an error: " + *e);
+    if (const std::string* e = reply_error(reply)) fail(op, "the engine answered an error: " + io::escaped_text(*e));
   return reply;
 }
 
@@ -114,7 +115,7 @@ std::vector<std::optional<bool>> ProcessEngine::tri_tri(const std::vector<TriTri
   for (const TriTriQuery& q : queries) qs.push_back(tri_tri_query(q));
   std::vector<std::optional<bool>> out;
   for (const Json& r : answer_all("tri_tri", qs)) {
-    if (const std::string* e = reply_error(r)) fail("tri_tri", "the engine answered an error: " + *e);
+    if (const std::string* e = reply_error(r)) fail("tri_tri", "the engine answered an error: " + io::escaped_text(*e));
     try {
       out.push_back(parse_tri_tri(r));
     } catch (const ProtocolError& p) {
@@ -129,7 +130,7 @@ std::vector<std::optional<SegmentPlaneHit>> ProcessEngine::segment_plane(const s
   for (const SegmentPlaneQuery& q : queries) qs.push_back(plane_query(q));
   std::vector<std::optional<SegmentPlaneHit>> out;
   for (const Json& r : answer_all("plane", qs)) {
-    if (const std::string* e = reply_error(r)) fail("plane", "the engine answered an error: " + *e);
+    if (const std::string* e = reply_error(r)) fail("plane", "the engine answered an error: " + io::escaped_text(*e));
     try {
       out.push_back(parse_plane(r));
     } catch (const ProtocolError& p) {
@@ -144,7 +145,7 @@ std::vector<std::optional<CcdAnswer>> ProcessEngine::ccd(const std::vector<CcdQu
   for (const CcdQuery& q : queries) qs.push_back(ccd_query(q));
   std::vector<std::optional<CcdAnswer>> out;
   for (const Json& r : answer_all("ccd", qs)) {
-    if (const std::string* e = reply_error(r)) fail("ccd", "the engine answered an error: " + *e);
+    if (const std::string* e = reply_error(r)) fail("ccd", "the engine answered an error: " + io::escaped_text(*e));
     try {
       out.push_back(parse_ccd(r));
     } catch (const ProtocolError& p) {

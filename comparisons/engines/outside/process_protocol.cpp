@@ -77,6 +77,11 @@ Json hello_request() { return {{"op", "hello"}, {"protocol", kProtocolVersion}};
 
 Hello parse_hello(const Json& reply) {
   Hello h;
+  // An engine written before the field says nothing and speaks protocol 1.
+  const auto v = reply.find("protocol");
+  if (v != reply.end() && !(v->is_number_integer() && v->get<long long>() == kProtocolVersion))
+    throw ProtocolError("the engine speaks protocol " + excerpt(*v) + ", tecido speaks protocol " +
+                        std::to_string(kProtocolVersion) + " (\"protocol\" of the hello reply)");
   const Json& s = member(reply, "supports");
   if (!s.is_array()) throw ProtocolError("\"supports\" must be an array of names, got " + excerpt(s));
   for (const Json& x : s) {

@@ -92,6 +92,36 @@ TEST(JsonLinesProcess, ClosedOutputMidLine) {
   EXPECT_NE(what.find("closed its output mid-line without a reply: exited with status 0"), std::string::npos) << what;
 }
 
+TEST(JsonLinesProcess, TheTimeoutBoundsTheWholeReplyNotTheSilence) {
+  // A byte every 10 ms and never a newline: never silent for long, so only a deadline on the whole
+  // reply stops it.
+  JsonLinesProcess p("read -r l; echo ready; read -r l; while :; do printf x; sleep 0.01; done", 500ms);
+  EXPECT_EQ(p.round_trip("hello"), "ready");
+  const auto t0 = std::chrono::steady_clock::now();
+  const std::string what = failure(p, "x");
+  EXPECT_NE(what.find("no whole reply within "), std::string::npos) << what;
+  EXPECT_NE(what.find("bytes without a newline by then"), std::string::npos) << what;
+  EXPECT_LT(std::chrono::steady_clock::now() - t0, 5s);
+}
+
+TEST(JsonLinesProcess, AReplyPastTheSizeLimitFailsThere) {
+  // 4 MiB of zeros without a newline against a limit of 1 MiB: stopped at the limit, well before
+  // the timeout.
+  JsonLinesProcess p("read -r l; head -c 4194304 /dev/zero; sleep 30", 20s, std::size_t{1} << 20);
+  const auto t0 = std::chrono::steady_clock::now();
+  const std::string what = failure(p, "x");
+  EXPECT_NE(what.find("a reply longer than the limit of 1 MiB (kMaxReplyBytes)"), std::string::npos) << what;
+  EXPECT_LT(std::chrono::steady_clock::now() - t0, 10s);
+}
+
+TEST(JsonLinesProcess, StderrBytesAreShownAsText) {
+  // An escape sequence, a bell and a byte that is not UTF-8 reach messages as escapes; UTF-8 text stays.
+  JsonLinesProcess p("read -r l; printf '\\033]0;owned\\007 \\377 a\\303\\247\\303\\243o\\r\\n' >&2; exit 3", 5s);
+  std::string tail;
+  failure(p, "x", &tail);
+  EXPECT_EQ(tail, "\\x1b]0;owned\\x07 \\xff a\xc3\xa7\xc3\xa3o") << tail;
+}
+
 TEST(JsonLinesProcess, CommandNotFound) {
   JsonLinesProcess p("/nonexistent/engine --serve", 5s);
   std::string tail;

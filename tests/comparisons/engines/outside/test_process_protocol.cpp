@@ -35,6 +35,18 @@ TEST(ProcessProtocol, Hello) {
   EXPECT_NE(protocol_error([] { parse_hello(Json::parse(R"([1,2])")); }).find("expected a JSON object"), std::string::npos);
 }
 
+TEST(ProcessProtocol, HelloNamesTheProtocolItSpeaks) {
+  EXPECT_EQ(parse_hello(Json::parse(R"({"protocol":1,"supports":["ccd"]})")).supports.count("ccd"), 1u);
+  EXPECT_EQ(parse_hello(Json::parse(R"({"supports":["ccd"]})")).supports.count("ccd"), 1u);  // before the field: 1
+  EXPECT_EQ(protocol_error([] { parse_hello(Json::parse(R"({"protocol":2,"supports":["ccd"]})")); }),
+            "the engine speaks protocol 2, tecido speaks protocol 1 (\"protocol\" of the hello reply)");
+  for (const char* other : {R"("1")", "1.5", "null", "[1]"})
+    EXPECT_NE(protocol_error([&] { parse_hello(Json::parse(std::string(R"({"supports":["ccd"],"protocol":)") + other + "}")); })
+                  .find("the engine speaks protocol " + Json::parse(other).dump()),
+              std::string::npos)
+        << other;
+}
+
 TEST(ProcessProtocol, TriTriRequestAndReply) {
   const TriTriQuery q{{Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0)}, {Vec3(0.5, 0.25, -1), Vec3(0, 0, 1), Vec3(1, 1, 1)}};
   EXPECT_EQ(with_op(tri_tri_query(q), "tri_tri"),
