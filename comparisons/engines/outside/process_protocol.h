@@ -1,6 +1,6 @@
 #pragma once
 /// The JSON-lines protocol of process engines (`--engine-cmd NAME=COMMAND`), one request and one
-/// reply per line, each a JSON object (README, "Validate your own engine"):
+/// reply per line, each a JSON object (docs/engines.md, "Validate your own engine"):
 ///   {"op":"hello","protocol":1}        -> {"supports":["tri_tri","ccd","plane","dynamics",...],"order":p}
 ///   {"op":"tri_tri","a":[[x,y,z]x3],"b":[[x,y,z]x3]}              -> {"hit":true|false|null}
 ///   {"op":"ccd","kind":"vertex-face"|"edge-edge","t0":[[x,y,z]x4],"t1":[[x,y,z]x4]} -> {"hit":bool|null,"toi":t|null}
