@@ -45,7 +45,7 @@ inline std::vector<std::string> relative_links(const std::string& markdown) {
     const std::size_t end = markdown.find(')', at + 2);
     if (end == std::string::npos) break;
     const std::string target = markdown.substr(at + 2, end - at - 2);
-    if (!target.empty() && target.find("://") == std::string::npos && target.find(' ') == std::string::npos)
+    if (!target.empty() && target.find("://") == std::string::npos && target.find_first_of(" \n") == std::string::npos)
       links.push_back(target);
   }
   return links;

@@ -48,16 +48,43 @@ testing::CliResult run_readme_command(const fs::path& dir, const std::string& co
 }
 
 /// Runs every command of the README's block under `heading`, each expected to exit as its
-/// comment promises (0 unless it says "exits N"). `cmake` lines are skipped: this test's own
-/// build has run them.
-void run_readme_block(const fs::path& dir, const std::string& heading) {
+/// comment promises (0 unless it says "exits N"), and returns what each printed, in order.
+/// `cmake` lines are skipped: this test's own build has run them.
+std::vector<testing::CliResult> run_readme_block(const fs::path& dir, const std::string& heading) {
   const std::vector<std::string> commands = testing::shell_commands(testing::sh_block_under(readme_text(), heading));
-  ASSERT_FALSE(commands.empty()) << "README.md has no ```sh block under \"" << heading << "\"";
+  EXPECT_FALSE(commands.empty()) << "README.md has no ```sh block under \"" << heading << "\"";
+  std::vector<testing::CliResult> results;
   for (const std::string& command : commands) {
     if (command.rfind("cmake ", 0) == 0) continue;
-    const testing::CliResult r = run_readme_command(dir, command);
+    results.push_back(run_readme_command(dir, command));
+    const testing::CliResult& r = results.back();
     EXPECT_EQ(r.code, testing::promised_exit(command)) << command << "\nstdout: " << r.out << "\nstderr: " << r.err;
   }
+  return results;
+}
+
+/// The answer of `engine` to the pair `id` in `tecido tritri --json` output.
+json readme_tritri_answer(const json& out, const std::string& id, const std::string& engine) {
+  for (const json& r : out["results"])
+    if (r["id"] == id) return r[engine];
+  return nullptr;
+}
+
+/// The name of the first failed check of the report whose name contains `engine`, "" if none.
+std::string readme_failed_check(const json& report, const std::string& engine) {
+  std::string found;
+  auto visit = [&](const json& v, const auto& self) -> void {
+    if (!found.empty()) return;
+    if (v.is_object() && v.contains("name") && v.contains("pass") && v["pass"] == false &&
+        v["name"].get<std::string>().find(engine) != std::string::npos) {
+      found = v["name"].get<std::string>();
+      return;
+    }
+    if (v.is_structured())
+      for (const json& child : v) self(child, self);
+  };
+  visit(report, visit);
+  return found;
 }
 
 TEST(Readme, StaysAFewScreens) {
@@ -87,9 +114,21 @@ TEST(Readme, TryItRunsAsWrittenAndWritesWhatItSays) {
 
 TEST(Readme, ValidateYourEngineRunsAsWritten) {
   const fs::path dir = readme_sandbox("readme-engine");
-  run_readme_block(dir, "Validate your own engine in three commands");
+  const std::vector<testing::CliResult> runs = run_readme_block(dir, "Validate your own engine in three commands");
+  ASSERT_EQ(runs.size(), 3u) << "three commands: build the engine, ask it, run the suites";
+  // What the README says of the second command: mt-plugin says false where exact says true.
+  const json answers = json::parse(runs[1].out);
+  for (const char* id : {"stab", "coplanar", "touching"}) {
+    EXPECT_EQ(readme_tritri_answer(answers, id, "mt-plugin"), false) << id;
+    EXPECT_EQ(readme_tritri_answer(answers, id, "exact"), true) << id;
+  }
+  // And of the third: the report names the plug-in, and checks of both example engines failed.
   const json report = json::parse(testing::slurp(dir / "out/mine/report.json"));
   EXPECT_NE(report["outside_engines"].dump().find("libmy_engine.so"), std::string::npos) << report["outside_engines"];
+  for (const char* engine : {"mt-plugin", "sampled-ccd"})
+    EXPECT_NE(readme_failed_check(report, engine), "") << engine << " failed no check";
+  EXPECT_TRUE(fs::exists(dir / "out/mine/report.md"));
+  EXPECT_TRUE(fs::exists(dir / "out/mine/ccd/disagreements.json"));
   fs::remove_all(dir);
 }
 
