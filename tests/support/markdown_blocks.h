@@ -21,8 +21,11 @@ inline std::vector<std::string> text_lines(const std::string& text) {
 inline std::vector<std::string> sh_block_under(const std::string& markdown, const std::string& heading) {
   const std::vector<std::string> lines = text_lines(markdown);
   std::size_t i = 0;
-  auto is_heading = [](const std::string& l) { return !l.empty() && l[0] == '#'; };
-  auto heading_text = [](const std::string& l) { return l.substr(l.find_first_not_of('#')).substr(1); };
+  auto is_heading = [](const std::string& l) {
+    const std::size_t text = l.find_first_not_of('#');
+    return text != 0 && text != std::string::npos && l[text] == ' ';
+  };
+  auto heading_text = [](const std::string& l) { return l.substr(l.find_first_not_of('#') + 1); };
   while (i < lines.size() && !(is_heading(lines[i]) && heading_text(lines[i]) == heading)) ++i;
   for (++i; i < lines.size() && !is_heading(lines[i]); ++i) {
     if (lines[i] != "```sh") continue;
