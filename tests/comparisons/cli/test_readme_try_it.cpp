@@ -103,12 +103,15 @@ TEST(Readme, TryItRunsAsWrittenAndWritesWhatItSays) {
   const std::string readme = readme_text();
   for (const char* named : {"out/try/result.json", "frame_000000.obj", "frame_001500.obj", "cloth.svg"})
     EXPECT_NE(readme.find(named), std::string::npos) << named;
+  ASSERT_TRUE(fs::exists(dir / "out/try/result.json")) << "the Try it block wrote no out/try/result.json";
   const json result = json::parse(testing::slurp(dir / "out/try/result.json"));
   EXPECT_EQ(result["status"], "ok");
   EXPECT_EQ(result["steps"], 1500);
   EXPECT_TRUE(fs::exists(dir / "out/try/frames/frame_000000.obj"));
   EXPECT_TRUE(fs::exists(dir / "out/try/frames/frame_001500.obj"));
-  if (std::system("command -v gnuplot >/dev/null 2>&1") == 0) EXPECT_TRUE(fs::exists(dir / "out/try/cloth.svg"));
+  if (std::system("command -v gnuplot >/dev/null 2>&1") == 0) {
+    EXPECT_TRUE(fs::exists(dir / "out/try/cloth.svg"));
+  }
   fs::remove_all(dir);
 }
 
@@ -117,12 +120,14 @@ TEST(Readme, ValidateYourEngineRunsAsWritten) {
   const std::vector<testing::CliResult> runs = run_readme_block(dir, "Validate your own engine in three commands");
   ASSERT_EQ(runs.size(), 3u) << "three commands: build the engine, ask it, run the suites";
   // What the README says of the second command: mt-plugin says false where exact says true.
-  const json answers = json::parse(runs[1].out);
+  const json answers = json::parse(runs[1].out, nullptr, false);
+  ASSERT_FALSE(answers.is_discarded()) << "the second command printed no JSON: " << runs[1].out;
   for (const char* id : {"stab", "coplanar", "touching"}) {
     EXPECT_EQ(readme_tritri_answer(answers, id, "mt-plugin"), false) << id;
     EXPECT_EQ(readme_tritri_answer(answers, id, "exact"), true) << id;
   }
   // And of the third: the report names the plug-in, and checks of both example engines failed.
+  ASSERT_TRUE(fs::exists(dir / "out/mine/report.json")) << "the third command wrote no out/mine/report.json";
   const json report = json::parse(testing::slurp(dir / "out/mine/report.json"));
   EXPECT_NE(report["outside_engines"].dump().find("libmy_engine.so"), std::string::npos) << report["outside_engines"];
   for (const char* engine : {"mt-plugin", "sampled-ccd"})
