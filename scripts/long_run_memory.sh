@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The README's long-run memory figures: peak resident memory of `tecido run` on
+# The long-run memory figures of docs/limits.md ("Long runs"): peak resident memory of `tecido run` on
 # data/scenes/long_run_cloth.json (a windblown 16 x 16 cloth over a floor, with drag and
 # self-collision, gia+edge3, checked after every step), measured by /usr/bin/time -v, three ways:
 #   with self-collision          the scene as written

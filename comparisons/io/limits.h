@@ -1,5 +1,5 @@
 #pragma once
-/// Every limit tecido puts on its input, in one table (README, "Limits"). Each is far above any
+/// Every limit tecido puts on its input, in one table (docs/limits.md, "Limits"). Each is far above any
 /// real file and is enforced before the work it bounds starts, so that no accepted input takes
 /// memory or time out of proportion to its size. Past a limit: io::InputError (the file and the
 /// JSON pointer or line) or io::UsageError (the option), exit 2, the limit named in the message.

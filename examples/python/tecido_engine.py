@@ -2,7 +2,7 @@
 """An example tecido engine in Python (standard library only), spoken to in JSON lines:
 `tecido ... --engine-cmd py=python3 examples/python/tecido_engine.py`.
 
-It answers these questions (see README, "Validate your own engine"):
+It answers these questions (see docs/engines.md, "Validate your own engine"):
   tri_tri   two closed triangles: does some edge of either cross the other (Moller-Trumbore
             without an epsilon, borders included)? It misses coplanar pairs (no edge crosses
             a plane it lies in) and decides touching cases in rounded arithmetic.

@@ -1,6 +1,6 @@
 #pragma once
 /// The JSON-lines protocol of process engines (`--engine-cmd NAME=COMMAND`), one request and one
-/// reply per line, each a JSON object (README, "Validate your own engine"):
+/// reply per line, each a JSON object (docs/engines.md, "Validate your own engine"):
 ///   {"op":"hello","protocol":1}        -> {"protocol":1,"supports":["tri_tri","ccd","plane","dynamics",...],"order":p}
 ///     ("protocol" of the reply: the version the engine speaks; absent, 1; another, the engine fails)
 ///   {"op":"tri_tri","a":[[x,y,z]x3],"b":[[x,y,z]x3]}              -> {"hit":true|false|null}

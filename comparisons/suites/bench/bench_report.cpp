@@ -47,7 +47,7 @@ std::string method_markdown(const Settings& s, const io::Json& context, const st
 std::string figures_markdown(const Figures& f, const Settings& s) {
   std::string tt;
   for (const auto& [engine, ns] : f.tritri_ns) tt += fmt::format("{}{} {}", tt.empty() ? "" : ", ", engine, value_text(ns));
-  std::string md = "### Figures\n\nThe README's benchmark figures, from this run.\n\n| measurement | this run | from |\n|---|---|---|\n";
+  std::string md = "### Figures\n\nThe benchmark figures of docs/benchmarks.md, from this run.\n\n| measurement | this run | from |\n|---|---|---|\n";
   md += fmt::format("| tri-tri, ns per random pair | {} | `BM_TriTri/<engine>` |\n", tt.empty() ? "–" : tt);
   md += fmt::format("| core tri-tri time / FCL's, / CGAL exact's | {}, {} | `BM_TriTri/core` over `/fcl`, `/exact` |\n",
                     value_text(f.tritri_core_vs_fcl), value_text(f.tritri_core_vs_exact));

@@ -1,5 +1,5 @@
 #pragma once
-/// The `bench` suite's report: the method (both commands, the machine), the figures the README
+/// The `bench` suite's report: the method (both commands, the machine), the figures docs/benchmarks.md
 /// quotes, the project's speed goals against this run, every benchmark row and a scaling plot.
 /// Every number is from this run; "met" and "not met" are computed from it.
 #include "comparisons/suites/bench/figures.h"

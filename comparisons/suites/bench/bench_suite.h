@@ -6,7 +6,7 @@
 /// shared machine are not a test).
 ///
 /// Layout: settings.h (min time, sizes, goals), bench_runner.* (running tecido-bench),
-/// benchmark_json.* (its output), figures.* (the figures the README quotes), bench_report.*
+/// benchmark_json.* (its output), figures.* (the figures docs/benchmarks.md quotes), bench_report.*
 /// (tables, prose, plot); this file runs and assembles.
 #include "comparisons/suites/suite.h"
 

@@ -1,5 +1,5 @@
 #pragma once
-/// The figures the `bench` suite reports (and the README quotes from it), derived from the rows of
+/// The figures the `bench` suite reports (and docs/benchmarks.md quotes from it), derived from the rows of
 /// one run of tecido-bench and of its second, SSE2-only run.
 #include "comparisons/suites/bench/benchmark_json.h"
 #include "comparisons/suites/bench/settings.h"

@@ -1,4 +1,4 @@
-// Every row of the limits table (comparisons/io/limits.h, README "Limits"): the command, exit 2,
+// Every row of the limits table (comparisons/io/limits.h, docs/limits.md "Limits"): the command, exit 2,
 // the one line naming the pointer, line or option and the limit, and nothing written. The input
 // file's size and the nesting depth are in test_text_file.cpp and test_json_reader.cpp.
 #include "tests/support/rejection.h"
