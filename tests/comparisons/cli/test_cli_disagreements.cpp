@@ -2,7 +2,8 @@
 // disagrees with the referee names, per engine, its misses and false hits, the first ids and the
 // file holding them all, and a replay command carrying the engine's door; that command, run as
 // printed, counts exactly the suite's misses and false hits for that engine (ccd with a naive
-// continuous test through the JSON-lines door, and core; tritri with the seed's MT test). Each
+// continuous test through the JSON-lines door, and core; the example plug-in given by a relative
+// path, replayed by its absolute one; tritri with the seed's MT test). Each
 // entry of the file names its engine, the engine's answer and the referee's. And a time of
 // impact reported late fails the late-toi check of an outside engine, while an engine on time
 // passes it.
@@ -129,6 +130,21 @@ TEST(CliDisagreements, ACcdReplayOfOneEngineReproducesTheSuitesCounts) {
   EXPECT_EQ(json::parse(none.out)["results"].size(), 0u);
   EXPECT_NE(none.err.find("tecido ccd: core: 0 false positives, 0 false negatives of 0 queries"), std::string::npos)
       << none.err;
+  std::filesystem::remove_all(dir);
+}
+
+TEST(CliDisagreements, APluginGivenByARelativePathIsReplayedByItsAbsolutePath) {
+  const auto dir = testing::temp_dir("disagree-plugin");
+  const std::string relative = std::filesystem::relative(testing::kExamplePlugin).string();
+  ASSERT_NE(relative.front(), '/');
+  const auto r = run_cli("suite ccd --quick --threads 2 --plugin " + quoted(relative) + " --engines sampled-ccd --out " +
+                         quoted(dir.string()));
+  EXPECT_EQ(r.code, 1) << r.err;  // the sampled test misses contacts
+  const std::string replay = printed_replay(r.err, "ccd", "sampled-ccd");
+  const std::string absolute = std::filesystem::absolute(testing::kExamplePlugin).lexically_normal().string();
+  EXPECT_NE(replay.find("--plugin " + absolute + " --json"), std::string::npos) << replay;
+  const json data = json::parse(testing::slurp(dir / "report.json"))["suites"][0]["data"];
+  expect_replay_reproduces(r.err, "ccd", "sampled-ccd", ccd_counts(data, "sampled-ccd"), "queries");
   std::filesystem::remove_all(dir);
 }
 
