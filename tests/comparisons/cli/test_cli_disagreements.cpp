@@ -3,7 +3,7 @@
 // file holding them all, and a replay command carrying the engine's door; that command, run as
 // printed, counts exactly the suite's misses and false hits for that engine (ccd with a naive
 // continuous test through the JSON-lines door, and core; the example plug-in given by a relative
-// path, replayed by its absolute one; tritri with the seed's MT test). Each
+// path, replayed by its absolute one; tritri with the seed's MT test; plane's engines). Each
 // entry of the file names its engine, the engine's answer and the referee's. And a time of
 // impact reported late fails the late-toi check of an outside engine, while an engine on time
 // passes it.
@@ -167,6 +167,26 @@ TEST(CliDisagreements, ATritriReplayOfOneEngineReproducesItsMissesAndFalseHits) 
   EXPECT_NE(md.find("misses on "), std::string::npos);
   EXPECT_NE(md.find(" misses"), std::string::npos);
   expect_replay_reproduces(r.err, "tritri", "core-mt", mt, "pairs");
+  std::filesystem::remove_all(dir);
+}
+
+TEST(CliDisagreements, APlaneReplayOfOneEngineReproducesItsMissesAndFalseHits) {
+  const auto dir = testing::temp_dir("disagree-plane");
+  const auto r = run_cli("suite plane --quick --threads 2 --out " + quoted(dir.string()));
+  EXPECT_EQ(r.code, 0) << r.err;
+  const json agreement = json::parse(testing::slurp(dir / "report.json"))["suites"][0]["data"]["agreement"];
+  long found = 0;
+  for (const auto& [engine, categories] : agreement.items()) {
+    EngineCounts c;
+    for (const auto& [category, t] : categories.items()) {
+      if (!t.is_object()) continue;
+      c.misses += t["misses"].get<long>();
+      c.false_hits += t["false_hits"].get<long>();
+    }
+    found += c.misses + c.false_hits;
+    expect_replay_reproduces(r.err, "plane", engine, c, "cases");
+  }
+  EXPECT_GT(found, 0);  // the seed's floating-point test decides border cases by rounding
   std::filesystem::remove_all(dir);
 }
 
