@@ -38,7 +38,8 @@ Command add_query_command(CLI::App& app, QueryCommand command) {
                       " by name; default: every one)");
   sub->add_option("--of-engine", o->of_engine,
                   "Only the entries whose id starts with \"NAME:\": one engine's disagreements in a suite's "
-                  "disagreement file (its replay)");
+                  "disagreement file (its replay)")
+      ->type_name("NAME");
   sub->add_flag("--json", o->json, "Print JSON (the only output format; kept for the contract)");
   add_outside_options(sub, o->outside);
   if (!command.footer.empty()) sub->footer(command.footer);
