@@ -7,6 +7,9 @@
 // cannot answer this query), engines in the order named. When the queries carry a truth (the CSV's
 // ground-truth column, or "truth" in a JSON file such as the ccd suite's disagreements), each
 // result adds "truth" and stderr gets one summary line per engine: false positives and negatives.
+// --of-engine NAME keeps the queries whose id starts with "NAME:" (one engine's disagreements in
+// the suite's file, the other keys of whose entries, "engine", "answer", "referee", are labels):
+// with --engines NAME and that engine's door, the replay the suite prints for it.
 // CSV queries add "rounded": whether some rational coordinate is not a double; the exact engine
 // answers on the rationals, the others on the nearest doubles, and their errors on rounded queries
 // are counted apart (they answered a slightly different query). Formats: comparisons/io/ccd_queries.h.
@@ -110,7 +113,7 @@ std::vector<std::optional<CcdAnswer>> answer_all(const Answerer& a, const std::v
 
 int run_ccd(const QueryRequest& request, const std::string& csv_kind) {
   const std::vector<Answerer> engines = answerers(request.engines, *request.outside);
-  std::vector<io::CcdQueryEntry> entries = load(request.input, csv_kind);
+  std::vector<io::CcdQueryEntry> entries = entries_of_engine(load(request.input, csv_kind), request.of_engine);
   bool all_truth = true;
   std::vector<char> rounded(entries.size());
   for (std::size_t i = 0; i < entries.size(); ++i) {
@@ -133,7 +136,8 @@ int run_ccd(const QueryRequest& request, const std::string& csv_kind) {
     results.push_back(std::move(row));
   }
   std::cout << OJson{{"results", results}}.dump() << "\n";
-  if (all_truth && !entries.empty())
+  // A replay (--of-engine) of an engine without disagreements still says so: 0 and 0 of 0.
+  if (all_truth && (!entries.empty() || !request.of_engine.empty()))
     for (std::size_t k = 0; k < engines.size(); ++k) std::cerr << summary(engines[k].name, tally[k]) << "\n";
   return 0;
 }

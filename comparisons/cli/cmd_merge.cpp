@@ -83,6 +83,7 @@ int merge_suites(const std::vector<std::string>& files, const std::string& out) 
     }
     r.name = sl.name;
     r.seconds = sl.seconds;
+    for (const std::string& line : r.stderr_lines) std::cerr << line << "\n";  // as `tecido suite` prints them
     results.push_back(std::move(r));
   }
   const int failed = suites::write_report(results, ctx);

@@ -119,6 +119,7 @@ int run_suites(const std::vector<const suites::SuiteEntry*>& chosen, const suite
     // On a terminal a sweep's progress bar took the line: name the suite again.
     if (s->sweep && ::isatty(2) == 1) std::cerr << "suite " << s->name << ":";
     std::cerr << " " << r.checks.size() - failed << " passed, " << failed << " failed (" << r.seconds << " s)\n";
+    for (const std::string& line : r.stderr_lines) std::cerr << "  " << line << "\n";
     results.push_back(std::move(r));
   }
   const int failed = suites::write_report(results, ctx);

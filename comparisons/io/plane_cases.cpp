@@ -14,6 +14,7 @@ std::vector<PlaneCase> plane_cases_from_json(const Json& doc, const std::string&
     pc.plane = read_bounded_plane(r, r.require(c, w, "plane"), child(w, "plane"), /*strict=*/false);
     pc.from = r.vec3(r.require(c, w, "from"), child(w, "from"), kMaxCoordinate);
     pc.to = r.vec3(r.require(c, w, "to"), child(w, "to"), kMaxCoordinate);
+    if (c.contains("truth")) pc.truth = r.boolean(c["truth"], child(w, "truth"));
     return pc;
   });
 }
@@ -32,6 +33,7 @@ Json plane_cases_to_json(const std::vector<PlaneCase>& cases) {
                      {"half_extents", Json::array({c.plane.half_extents.x(), c.plane.half_extents.y()})}}},
                    {"from", v3(c.from)},
                    {"to", v3(c.to)}});
+    if (c.truth) arr.back()["truth"] = *c.truth;
   }
   return Json{{"cases", arr}};
 }

@@ -19,6 +19,7 @@ std::vector<TriPair> tri_pairs_from_json(const Json& doc, const std::string& fil
     TriPair tp;
     tp.a = read_triangle(r, r.require(p, w, "a"), child(w, "a"));
     tp.b = read_triangle(r, r.require(p, w, "b"), child(w, "b"));
+    if (p.contains("truth")) tp.truth = r.boolean(p["truth"], child(w, "truth"));
     return tp;
   });
 }
@@ -32,7 +33,11 @@ Json tri_pairs_to_json(const std::vector<TriPair>& pairs) {
     for (const Vec3& v : t) j.push_back({v.x(), v.y(), v.z()});
     return j;
   };
-  for (const auto& p : pairs) arr.push_back({{"id", p.id}, {"a", tri(p.a)}, {"b", tri(p.b)}});
+  for (const auto& p : pairs) {
+    Json j = {{"id", p.id}, {"a", tri(p.a)}, {"b", tri(p.b)}};
+    if (p.truth) j["truth"] = *p.truth;
+    arr.push_back(std::move(j));
+  }
   return Json{{"pairs", arr}};
 }
 

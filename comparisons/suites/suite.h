@@ -48,6 +48,10 @@ struct SuiteResult {
   std::vector<std::string> plots;  ///< file names written under out_dir
   io::Json data = io::Json::object();  ///< extra machine-readable results for report.json
   double seconds = 0.0;            ///< wall time (not part of the determinism promise)
+  /// Lines `tecido suite` prints on stderr under the suite's count of checks: an agreement suite's
+  /// disagreements per engine, their first ids, the file holding them all and the replay command
+  /// (agreement/replay.h). Not in the report.
+  std::vector<std::string> stderr_lines;
 };
 
 using SuiteFn = std::function<SuiteResult(const SuiteContext&)>;

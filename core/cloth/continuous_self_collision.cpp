@@ -264,9 +264,12 @@ void ContinuousSelfCollisionDetector::test_pair(int i, int j, const std::vector<
       // a < b), not in the triangle's winding. ccd's answer on a near miss within its tolerance
       // can depend on the points' order, so any other order could differ from core-brute
       // (fuzz_selfcollide_continuous: regress_edge_orientation, regress_edge_orientation_missed).
-      const int lo = std::min(r[0]->edge[a], r[1]->edge[b]), hi = std::max(r[0]->edge[a], r[1]->edge[b]);
-      const MeshEdge &e = edges_[lo], &g = edges_[hi];
-      push(CcdKind::EdgeEdge, {e[0], e[1], g[0], g[1]}, pair_key(lo, hi), overlap(ea, eb), x0, x1);
+      // The endpoints are ordered here rather than read from edges_: no lookup in the inner loop.
+      const bool first = r[0]->edge[a] < r[1]->edge[b];
+      const int p0 = std::min(a0, a1), p1 = std::max(a0, a1), q0 = std::min(b0, b1), q1 = std::max(b0, b1);
+      const std::array<int, 4> points = first ? std::array<int, 4>{p0, p1, q0, q1} : std::array<int, 4>{q0, q1, p0, p1};
+      const std::uint64_t key = first ? pair_key(r[0]->edge[a], r[1]->edge[b]) : pair_key(r[1]->edge[b], r[0]->edge[a]);
+      push(CcdKind::EdgeEdge, points, key, overlap(ea, eb), x0, x1);
     }
   }
 }

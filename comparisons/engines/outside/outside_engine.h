@@ -52,6 +52,10 @@ class OutsideEngine {
   virtual const std::string& name() const = 0;
   /// How it was reached, for reports: "plug-in /abs/path.so (ABI 1)" or "process `python3 e.py`".
   virtual std::string door() const = 0;
+  /// The option that loads it again (door_option.h: "--plugin /abs/lib.so" or "--engine-cmd
+  /// 'NAME=COMMAND'"), for the replay commands of reports; "" when it has no door of the command
+  /// line (an engine made in a test).
+  virtual std::string door_option() const { return ""; }
   /// Whether each answer costs a round trip through a pipe (reports say costs include it).
   virtual bool is_process() const = 0;
   virtual Capabilities capabilities() const = 0;

@@ -3,6 +3,7 @@
 /// (a function call each: no round trip), dynamics through PluginSimulation. An engine without
 /// TECIDO_ENGINE_THREAD_SAFE is called from one thread at a time (a mutex around every call, its
 /// simulations' calls included).
+#include "comparisons/engines/outside/door_option.h"
 #include "comparisons/engines/outside/outside_engine.h"
 #include "comparisons/engines/outside/plugin_library.h"
 
@@ -18,6 +19,7 @@ class PluginEngine final : public OutsideEngine {
 
   const std::string& name() const override { return name_; }
   std::string door() const override { return library_->door(); }
+  std::string door_option() const override { return plugin_option(library_->path()); }
   bool is_process() const override { return false; }
   Capabilities capabilities() const override;
   std::optional<double> claimed_order() const override;

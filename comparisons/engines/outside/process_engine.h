@@ -12,6 +12,7 @@
 ///
 /// Any failure of the door (death, timeout, malformed JSON, an {"error"} reply to a query or a
 /// step) is an EngineError naming the engine, its command, the request and its stderr tail.
+#include "comparisons/engines/outside/door_option.h"
 #include "comparisons/engines/outside/json_lines_process.h"
 #include "comparisons/engines/outside/outside_engine.h"
 #include "comparisons/engines/outside/process_protocol.h"
@@ -34,6 +35,7 @@ class ProcessEngine final : public OutsideEngine, public std::enable_shared_from
 
   const std::string& name() const override { return name_; }
   std::string door() const override { return "process `" + process_.command() + "`"; }
+  std::string door_option() const override { return engine_cmd_option(name_, process_.command()); }
   bool is_process() const override { return true; }
   Capabilities capabilities() const override;
   std::optional<double> claimed_order() const override { return hello_.order; }

@@ -38,7 +38,12 @@ std::string fn_fp_cell(const EngineTally& e) {
 std::string toi_cell(const EngineTally& e) {
   if (e.tally.both_hit == 0) return "–";
   std::string s = fmt::format("{:.2g} / {:.2g}", e.tally.max_t_error, e.mean_toi_error());
-  if (e.toi_after) s += fmt::format(" ({} late)", e.toi_after);
+  // "late" counts tois certainly after t* (the referee's own, rounded up, among them); "up to" is
+  // the largest toi - t* against the referee's toi, shown where it is positive.
+  if (e.toi_after && e.max_toi_late > 0)
+    s += fmt::format(" ({} late, up to +{:.2g})", e.toi_after, e.max_toi_late);
+  else if (e.toi_after)
+    s += fmt::format(" ({} late)", e.toi_after);
   return s;
 }
 
@@ -84,7 +89,7 @@ std::string method_markdown(const Settings& s, std::uint64_t seed) {
       "answer, and on the first {} queries of each family it must give the same answer without its floating-point "
       "filter. FN = contacts an engine missed, FP = misses it called hits; time-of-impact error |toi - t*| where both "
       "hit (max / mean; \"late\": toi certainly after t*, which the referee's own toi is when t* is not a double and "
-      "rounds up to the nearest one). ns/query: wall time over the family's block, one thread of "
+      "rounds up to the nearest one; \"up to\": the largest toi - t*). ns/query: wall time over the family's block, one thread of "
       "this run (cases share the machine; the benchmarks BM_CCD measure speed). Scale family: 2^e for e in {}, offsets "
       "2^k for k in {}; near misses by {} units of 2^-52.\n\nFamilies:\n\n",
       s.per_family, s.random_per_family, seed, s.unfiltered_per_family, fmt::join(s.scale_exponents, ", "),
@@ -105,7 +110,9 @@ std::string outside_markdown(const std::vector<SuiteEngine>& engines) {
   }
   if (md.empty()) return md;
   return "Outside engines (checked like the reference engines: on random motion only, false negative, false "
-         "positive and unanswered shares within /ccd/outside_random_max_*; their adversarial rows are reported):\n\n" +
+         "positive and unanswered shares within /ccd/outside_random_max_*_rate, and no toi later than the "
+         "referee's first contact by more than /ccd/outside_random_max_toi_late; their adversarial rows are "
+         "reported):\n\n" +
          md + "\n";
 }
 
@@ -213,6 +220,7 @@ io::Json results_json(const std::vector<FamilyResult>& results) {
                      {"max_toi_error", t.tally.max_t_error},
                      {"mean_toi_error", t.mean_toi_error()},
                      {"toi_after", t.toi_after},
+                     {"max_toi_late", t.max_toi_late},
                      {"ns_per_query", t.ns_per_query()}};
     j[r.family] = {{"queries", r.queries}, {"contacts", r.contacts}, {"known", r.known},
                    {"known_mismatch", r.known_mismatch}, {"unfiltered_mismatch", r.unfiltered_mismatch}, {"engines", e}};

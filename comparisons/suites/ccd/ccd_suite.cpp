@@ -8,8 +8,11 @@
 #include "comparisons/suites/ccd/families.h"
 #include "comparisons/suites/ccd/sheet_through_sheet.h"
 
+#include "comparisons/suites/agreement/replay.h"
+
 #include <fmt/format.h>
 
+#include <filesystem>
 #include <memory>
 
 namespace tecido::suites {
@@ -44,6 +47,11 @@ struct Plan {
   }
 };
 
+/// What the late-toi checks measure, and why it matters.
+const char* const kLateNote =
+    "largest toi - t* where both hit: how much later than the referee's first contact the engine reports it (a "
+    "late toi lets a simulation tunnel, as a miss does)";
+
 /// An outside engine's checks on family f: on random motion only, like the reference engines
 /// (the adversarial families are reported), and only on the kind it models.
 void declare_outside(CheckList& c, const Tolerances& tol, const Family& f, const ccd::SuiteEngine& e) {
@@ -54,6 +62,7 @@ void declare_outside(CheckList& c, const Tolerances& tol, const Family& f, const
             "share of non-contacts called hits");
   c.declare(check_name(f, e.name, "unanswered_rate"), tol.at_most("/ccd/outside_random_max_unanswered_rate"),
             "share of queries answered null (cannot say)");
+  c.declare(check_name(f, e.name, "max_toi_late"), tol.at_most("/ccd/outside_random_max_toi_late"), kLateNote);
 }
 
 /// The checks of one family (see ccd_suite.h), for the engines the plan runs.
@@ -85,6 +94,7 @@ void declare_family(CheckList& c, const Tolerances& tol, const Family& f, const 
               "share of contacts missed");
     c.declare(check_name(f, e, "false_positive_rate"), tol.at_most("/ccd/" + e + "_random_max_fp_rate"),
               "share of non-contacts called hits");
+    c.declare(check_name(f, e, "max_toi_late"), tol.at_most("/ccd/" + e + "_random_max_toi_late"), kLateNote);
   }
 }
 
@@ -152,6 +162,7 @@ void record(CheckList& c, const Family& f, const FamilyResult& r) {
     set("false_negative_rate", r.fn_rate(e));
     set("false_positive_rate", r.fp_rate(e));
     set("max_toi_error", t.max_t_error);
+    set("max_toi_late", e.max_toi_late);
     set("unanswered_rate", t.cases ? static_cast<double>(t.no_answer) / static_cast<double>(t.cases) : 0.0);
   }
   if (c.declared(check_name(f, "exact", "known_mismatches")))
@@ -159,22 +170,48 @@ void record(CheckList& c, const Family& f, const FamilyResult& r) {
   c.set(check_name(f, "exact", "unfiltered_mismatches"), static_cast<double>(r.unfiltered_mismatch));
 }
 
-/// DIR/ccd/disagreements.json from the families' disagreements (their queries regenerated).
-std::string write_disagreements(const Plan& plan, const SuiteContext& ctx, const std::vector<FamilyResult>& results) {
-  std::vector<io::CcdQueryEntry> entries;
+const char* const kDisagreementFile = "ccd/disagreements.json";
+
+/// Per engine of the plan: its misses and false hits over the families that ran, and the kept ones.
+std::vector<agreement::EngineDisagreements> per_engine(const Plan& plan, const std::vector<FamilyResult>& results,
+                                                       const std::vector<ccd::KeptDisagreement>& kept) {
+  const std::size_t n = plan.engines.size();
+  std::vector<std::string> doors(n);
+  std::vector<long> misses(n, 0), false_hits(n, 0);
+  for (std::size_t e = 0; e < n; ++e)
+    if (plan.engines[e].outside) doors[e] = plan.engines[e].outside->door_option();
+  for (const FamilyResult& r : results)
+    for (std::size_t e = 0; e < r.engines.size() && e < n; ++e)
+      misses[e] += r.engines[e].tally.misses, false_hits[e] += r.engines[e].tally.false_hits;
+  std::vector<std::size_t> kept_engine;
+  std::vector<std::string> kept_ids;
+  for (const ccd::KeptDisagreement& k : kept) kept_engine.push_back(k.d.engine), kept_ids.push_back(k.entry.id);
+  return agreement::engine_disagreements(plan.engine_names(), doors, misses, false_hits, kept_engine, kept_ids);
+}
+
+/// DIR/ccd/disagreements.json from the families' disagreements (their queries regenerated); the
+/// report's paragraph, and the per-engine lines for stderr (the file named by its absolute path).
+std::string write_disagreements(const Plan& plan, const SuiteContext& ctx, const std::vector<FamilyResult>& results,
+                                std::vector<std::string>& stderr_out) {
+  std::vector<ccd::KeptDisagreement> kept;
   const auto& fams = ccd::families();
   for (std::size_t k = 0; k < results.size(); ++k) {
     if (results[k].disagree.empty()) continue;
     const auto queries = ccd::family_queries(k, plan.settings, plan.seed);
     ccd::add_disagreements(ccd::family_name(fams[k]), results[k], queries, plan.engine_names(),
-                           plan.settings.max_disagreements, entries);
+                           plan.settings.max_disagreements, kept);
   }
-  io::write_file_atomic(ctx.out_dir + "/ccd/disagreements.json", io::ccd_queries_to_json(entries).dump() + "\n");
-  return fmt::format("{} disagreements with the referee (at most {}) are in `ccd/disagreements.json` (ids "
-                     "`engine:kind/family/index`, the referee's answer as `truth`); `tecido ccd --queries "
-                     "DIR/ccd/disagreements.json --json` re-runs them with every engine and prints each one's false "
-                     "positives and negatives.\n\n",
-                     entries.size(), plan.settings.max_disagreements);
+  const std::string path = ctx.out_dir + "/" + kDisagreementFile;
+  io::write_file_atomic(path, ccd::disagreements_json(kept, plan.engine_names()).dump() + "\n");
+  const std::vector<agreement::EngineDisagreements> engines = per_engine(plan, results, kept);
+  const agreement::ReplayCommand replay{"tecido ccd", "--queries"};
+  stderr_out = agreement::stderr_lines("ccd", replay, std::filesystem::absolute(path).lexically_normal().string(), engines);
+  return fmt::format("{} disagreements with the referee (at most {}) are in `{}` (ids `engine:kind/family/index`; "
+                     "each entry names its `engine`, the engine's `answer` and the `referee`'s, hit and toi, and "
+                     "carries the referee's hit as `truth`); `tecido ccd --queries DIR/{} --json` re-runs them with "
+                     "every engine and prints each one's false positives and negatives.\n\n",
+                     kept.size(), plan.settings.max_disagreements, kDisagreementFile, kDisagreementFile) +
+         agreement::replay_markdown(replay, std::string("DIR/") + kDisagreementFile, engines);
 }
 
 /// The outside engines of the plan that do not model `kind` (their cells read "not modelled").
@@ -222,7 +259,7 @@ SuiteResult assemble(const Plan& plan_in, const SuiteContext& ctx, const std::ve
   res.markdown = ccd::method_markdown(plan.settings, plan.seed) + ccd::outside_markdown(plan.engines) +
                  ccd::kind_tables(CcdKind::VertexFace, fr, failed, vf_off) +
                  ccd::kind_tables(CcdKind::EdgeEdge, fr, failed, ee_off) + ccd::referee_table(fr, failed) +
-                 ccd::conclusions(fr, failed) + write_disagreements(plan, ctx, fr) + sheet_md;
+                 ccd::conclusions(fr, failed) + write_disagreements(plan, ctx, fr, res.stderr_lines) + sheet_md;
   res.data = ccd::results_json(fr);
   res.checks = plan.checks.finish();
   return res;

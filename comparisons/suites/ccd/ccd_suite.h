@@ -7,11 +7,14 @@
 /// Checks: core misses nothing and never reports a time after the referee's, on every family;
 /// the referee reproduces every constructed answer and agrees with itself without its filter;
 /// on random motion, core's false positive share and time error and FCL's and Bullet's miss and
-/// false positive shares stay within their bands. Elsewhere FCL and Bullet are reported, not
-/// checked. An outside engine is checked like them, on random motion only, of the kinds it models
-/// (/ccd/outside_random_max_fn_rate, _fp_rate, _unanswered_rate); a kind it does not model is
-/// reported "not modelled by <engine>". Checks exist only for the engines that run; the
-/// sheet-through-sheet group measures core and runs when core does. Disagreements go to DIR/ccd/disagreements.json, which `tecido ccd --queries` re-runs.
+/// false positive shares and late toi (the largest toi - t* where both hit, max_toi_late) stay
+/// within their bands. Elsewhere FCL and Bullet are reported, not checked. An outside engine is
+/// checked like them, on random motion only, of the kinds it models
+/// (/ccd/outside_random_max_fn_rate, _fp_rate, _unanswered_rate, _toi_late); a kind it does not
+/// model is reported "not modelled by <engine>". Checks exist only for the engines that run; the
+/// sheet-through-sheet group measures core and runs when core does. Disagreements go to
+/// DIR/ccd/disagreements.json, which `tecido ccd --queries` re-runs; per engine, the report and
+/// stderr give the replay of its own (agreement/replay.h).
 ///
 /// Layout: settings.h (what runs), constructions.* and families.* with vertex_face_families.cpp
 /// and edge_edge_families.cpp (the generators), family_case.* (one case: a family through every

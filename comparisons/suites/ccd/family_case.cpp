@@ -42,11 +42,12 @@ std::vector<ExactCcd> referee(const std::vector<KnownQuery>& queries, const Sett
   return truth;
 }
 
-/// Both hit: the time-of-impact error's sum and whether toi is certainly after t*.
+/// Both hit: the time-of-impact error's sum, whether toi is certainly after t*, and how late it is.
 void toi_figures(const CcdAnswer& a, const ExactCcd& e, EngineTally& t) {
   t.sum_toi_error += std::fabs(a.toi - e.toi);
   // t* is e.toi when exact, otherwise strictly between the adjacent doubles toi_lo and toi_hi.
   t.toi_after += a.toi > (e.toi_exact ? e.toi : e.toi_lo);
+  t.max_toi_late = std::max(t.max_toi_late, a.toi - e.toi);
 }
 
 /// One engine on the block: timed answers, then the tally against the truth (agreement kit).

@@ -10,7 +10,8 @@ io::Json family_result_json(const FamilyResult& r) {
     const agreement::Tally& t = e.tally;
     engines.push_back({{"engine", e.engine}, {"queries", t.cases}, {"no_answer", t.no_answer}, {"fn", t.misses},
                        {"fp", t.false_hits}, {"both_hit", t.both_hit}, {"max_toi_error", num(t.max_t_error)},
-                       {"sum_toi_error", num(e.sum_toi_error)}, {"toi_after", e.toi_after}, {"seconds", num(e.seconds)}});
+                       {"sum_toi_error", num(e.sum_toi_error)}, {"toi_after", e.toi_after}, {"max_toi_late", num(e.max_toi_late)},
+                       {"seconds", num(e.seconds)}});
   }
   io::Json disagree = io::Json::array();
   for (const agreement::Disagreement& d : r.disagree)
@@ -39,6 +40,7 @@ EngineTally engine_tally_from_json(const io::Json& e) {
   t.tally.max_t_error = get_num(e.at("max_toi_error"));
   t.sum_toi_error = get_num(e.at("sum_toi_error"));
   t.toi_after = e.at("toi_after").get<long>();
+  t.max_toi_late = get_num(e.at("max_toi_late"));
   t.seconds = get_num(e.at("seconds"));
   return t;
 }

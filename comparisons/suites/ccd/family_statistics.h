@@ -19,6 +19,9 @@ struct EngineTally {
   agreement::Tally tally;
   double sum_toi_error = 0.0;  ///< |toi - t*| summed over tally.both_hit
   long toi_after = 0;  ///< both hit and toi is certainly later than the referee's t*
+  /// The largest toi - t* where both hit, t* the referee's toi (0 when never later): how late the
+  /// engine says a contact begins; a late toi lets a simulation tunnel as a miss does.
+  double max_toi_late = 0.0;
   double seconds = 0.0;  ///< wall time answering the family's queries (one thread, this run)
 
   double ns_per_query() const { return tally.cases ? 1e9 * seconds / static_cast<double>(tally.cases) : 0.0; }

@@ -3,6 +3,7 @@
 #include "comparisons/io/atomic_file.h"
 #include "comparisons/suites/agreement/block_result.h"
 #include "comparisons/suites/agreement/disagreements.h"
+#include "comparisons/suites/agreement/replay.h"
 #include "comparisons/suites/plane/agreement_case.h"
 #include "comparisons/suites/plane/check_plan.h"
 #include "comparisons/suites/plane/contact_time_report.h"
@@ -15,6 +16,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <memory>
 #include <stdexcept>
 
@@ -122,9 +124,11 @@ void record_agreement(CheckList& checks, const Plan& plan, const AgreementTable&
   }
 }
 
-/// The agreement section: table, conclusions, the disagreement file; the checks' values.
+/// The agreement section: table, conclusions, the disagreement file (labelled, with the replay of
+/// each engine, also on stderr); the checks' values.
 std::string agreement_section(CheckList& checks, const Plan& plan, const std::string& out_dir,
-                              const std::vector<io::Json>& results, io::Json& data) {
+                              const std::vector<io::Json>& results, io::Json& data,
+                              std::vector<std::string>& stderr_out) {
   AgreementTable table = agreement::empty_table(plan.categories.size(), engine_names(plan));
   for (std::size_t i = 0; i < plan.layout.blocks.size(); ++i) {
     const CaseRange& range = plan.layout.blocks[i];
@@ -132,13 +136,25 @@ std::string agreement_section(CheckList& checks, const Plan& plan, const std::st
                          results.at(case_index(plan.layout, {CaseGroup::Agreement, i})));
   }
   record_agreement(checks, plan, table);
-  const auto kept = agreement::disagreement_cases<io::PlaneCase>(
-      table, agreement::kept_disagreements(table, plan.settings.max_disagreements),
-      [&plan](std::size_t c, long k) { return category_case(plan.case_seed, c, plan.categories.at(c), k); });
-  io::write_file_atomic(out_dir + "/" + kDisagreementFile, io::plane_cases_to_json(kept).dump(1) + "\n");
+  const std::vector<agreement::Disagreement> kept_d = agreement::kept_disagreements(table, plan.settings.max_disagreements);
+  auto kept = agreement::disagreement_cases<io::PlaneCase>(
+      table, kept_d, [&plan](std::size_t c, long k) { return category_case(plan.case_seed, c, plan.categories.at(c), k); });
+  std::vector<std::string> kept_ids;
+  for (std::size_t k = 0; k < kept.size(); ++k) kept[k].truth = kept_d[k].truth.hit, kept_ids.push_back(kept[k].id);
+  io::Json doc = io::plane_cases_to_json(kept);
+  agreement::label_entries(doc, "cases", table.engines, kept_d, "t");
+  const std::string path = out_dir + "/" + kDisagreementFile;
+  io::write_file_atomic(path, doc.dump(1) + "\n");
   data["agreement"] = agreement_json(plan.categories, table);
+  // The plane suite runs built-in engines only: no door to carry.
+  const auto per_engine =
+      agreement::table_disagreements(table, std::vector<std::string>(table.engines.size()), kept_d, kept_ids);
+  const agreement::ReplayCommand replay{"tecido plane", "--cases"};
+  stderr_out =
+      agreement::stderr_lines("plane", replay, std::filesystem::absolute(path).lexically_normal().string(), per_engine);
   return agreement_table(plan.categories, table) + agreement_conclusions(plan.categories, table, kReferee) +
-         disagreements_markdown(kept.size(), agreement::disagreements_found(table), kDisagreementFile);
+         disagreements_markdown(kept.size(), agreement::disagreements_found(table), kDisagreementFile) +
+         agreement::replay_markdown(replay, std::string("DIR/") + kDisagreementFile, per_engine);
 }
 
 ContactTable contact_table_of(const Plan& plan, const std::vector<io::Json>& results) {
@@ -217,7 +233,7 @@ SuiteResult assemble(const Plan& plan, const std::string& out_dir, const std::ve
   std::string md;
   if (plan.referee) {
     md = method_markdown(plan.settings, plan.seed, kReferee, plan.categories) +
-         agreement_section(checks, plan, out_dir, results, res.data);
+         agreement_section(checks, plan, out_dir, results, res.data, res.stderr_lines);
   } else {
     md = no_referee_markdown();
   }

@@ -14,8 +14,10 @@ std::string method_markdown(const Settings& s, std::uint64_t seed, const std::st
                             const std::vector<Family>& families) {
   return agreement::method_opening(
       {s.random_pairs, s.pairs_per_family, seed, s.block, "pairs", "family"},
-      fmt::format(". Each cell: pairs where the engine agrees with the referee `{}` (CGAL exact predicates) / pairs; "
-                  "`n/a` = the engine gave no answer. ns/pair: CPU time of the case's thread per random pair, while "
+      fmt::format(". Each cell: pairs where the engine agrees with the referee `{}` (CGAL exact predicates) / pairs, "
+                  "and the others apart: misses (the referee says the triangles intersect, the engine says no: cloth "
+                  "passes through), false hits (the engine says they intersect, the referee no: cloth jitters) and "
+                  "`n/a` (the engine gave no answer). ns/pair: CPU time of the case's thread per random pair, while "
                   "the other cases run on the other cores (the `bench` suite times the same tests alone). "
                   "Families:\n\n",
                   referee),
@@ -41,8 +43,16 @@ std::string outside_markdown(const std::vector<outside::OutsideEnginePtr>& outsi
 }
 
 namespace {
+/// "agree/pairs", then what the rest were where there is any: "(3 misses, 1 false hit, 2 n/a)".
 std::string tritri_cell(const agreement::Tally& t) {
-  return fmt::format("{}/{}{}", t.agree, t.cases, t.no_answer ? fmt::format(" ({} n/a)", t.no_answer) : "");
+  std::string rest;
+  const auto add = [&rest](long n, const char* one, const char* many) {
+    if (n > 0) rest += fmt::format("{}{} {}", rest.empty() ? "" : ", ", n, n == 1 ? one : many);
+  };
+  add(t.misses, "miss", "misses");
+  add(t.false_hits, "false hit", "false hits");
+  add(t.no_answer, "n/a", "n/a");
+  return fmt::format("{}/{}{}", t.agree, t.cases, rest.empty() ? "" : " (" + rest + ")");
 }
 }  // namespace
 
@@ -65,13 +75,17 @@ std::string agreement_table(const std::vector<Family>& families, const Agreement
 }
 
 namespace {
-/// "agrees on every pair" or "disagrees on coplanar (3 of 500), ...; no answer on ... (94)".
+/// "agrees on every pair" or "misses on coplanar (3 of 500), ...; false hits on ...; no answer on ... (94)".
 std::string engine_findings(const std::vector<Family>& families, const AgreementTable& table, std::size_t e) {
   const std::vector<std::string> names = agreement::family_names(families);
-  const std::string wrong = agreement::family_counts(names, table, e, [](const agreement::Tally& t) { return t.disagreements(); });
+  const std::string misses = agreement::family_counts(names, table, e, [](const agreement::Tally& t) { return t.misses; });
+  const std::string false_hits =
+      agreement::family_counts(names, table, e, [](const agreement::Tally& t) { return t.false_hits; });
   const std::string silent =
       agreement::family_counts(names, table, e, [](const agreement::Tally& t) { return t.no_answer; }, false);
-  std::string s = wrong.empty() ? "agrees with the referee on every evaluated pair" : "disagrees on " + wrong;
+  std::string s = misses.empty() && false_hits.empty() ? "agrees with the referee on every evaluated pair" : "";
+  if (!misses.empty()) s += "misses on " + misses;
+  if (!false_hits.empty()) s += (s.empty() ? "" : "; ") + ("false hits on " + false_hits);
   if (!silent.empty()) s += "; no answer on " + silent;
   return s;
 }
@@ -112,7 +126,8 @@ io::Json table_json(const std::vector<Family>& families, const AgreementTable& t
     j["ns_per_pair"] = std::isfinite(ns) ? io::Json(ns) : io::Json(nullptr);
     for (std::size_t f = 0; f < families.size(); ++f) {
       const agreement::Tally& t = table.tally[f][e];
-      j[families[f].name] = {{"agree", t.agree}, {"pairs", t.cases}, {"no_answer", t.no_answer}};
+      j[families[f].name] = {{"agree", t.agree},         {"pairs", t.cases},           {"no_answer", t.no_answer},
+                             {"misses", t.misses},       {"false_hits", t.false_hits}};
       if (!table.error[f].empty()) j[families[f].name]["error"] = table.error[f];
     }
   }

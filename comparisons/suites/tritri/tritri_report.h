@@ -24,8 +24,8 @@ std::string method_markdown(const Settings& s, std::uint64_t seed, const std::st
 /// engine's ns/pair is wall time including its door's round trips.
 std::string outside_markdown(const std::vector<outside::OutsideEnginePtr>& outside);
 
-/// One row per engine (ns per random pair; agreeing / pairs per family), the referee's count of
-/// intersecting pairs on top. A family whose cases failed shows "failed" and its reason below.
+/// One row per engine (ns per random pair; agreeing / pairs per family, with the misses, false hits
+/// and unanswered pairs apart), the referee's count of intersecting pairs on top. A family whose cases failed shows "failed" and its reason below.
 std::string agreement_table(const std::vector<Family>& families, const AgreementTable& table);
 
 /// Per engine, what is checked and where it disagrees with the referee or gives no answer, read
@@ -36,7 +36,8 @@ std::string conclusions_markdown(const std::vector<Family>& families, const Agre
 /// Where the disagreements went: `kept` of `found` pairs in `file`, and the command that reruns them.
 std::string disagreements_markdown(std::size_t kept, long found, const std::string& file);
 
-/// report.json's data: {engine: {"ns_per_pair", family: {"agree", "pairs", "no_answer"}}}.
+/// report.json's data: {engine: {"ns_per_pair", family: {"agree", "pairs", "no_answer", "misses",
+/// "false_hits"}}}.
 io::Json table_json(const std::vector<Family>& families, const AgreementTable& table);
 
 }  // namespace tecido::suites::tritri

@@ -4,11 +4,13 @@
 #include "comparisons/io/atomic_file.h"
 #include "comparisons/suites/agreement/block_result.h"
 #include "comparisons/suites/agreement/disagreements.h"
+#include "comparisons/suites/agreement/replay.h"
 #include "comparisons/suites/tritri/case_index.h"
 #include "comparisons/suites/tritri/check_plan.h"
 #include "comparisons/suites/tritri/tritri_case.h"
 #include "comparisons/suites/tritri/tritri_report.h"
 
+#include <filesystem>
 #include <memory>
 
 namespace tecido::suites {
@@ -44,6 +46,13 @@ std::vector<std::string> engine_names(const Plan& plan) {
   for (const TriTriEngine& e : plan.engines) names.push_back(e.name);
   for (auto& n : outside_names(plan)) names.push_back(std::move(n));
   return names;
+}
+
+/// Each engine's door option, in engine_names() order ("" for a built-in engine).
+std::vector<std::string> door_options(const Plan& plan) {
+  std::vector<std::string> doors(plan.engines.size());
+  for (const auto& e : plan.outside) doors.push_back(e->door_option());
+  return doors;
 }
 
 std::shared_ptr<Plan> make_plan(const SuiteContext& ctx, const tritri::Settings& settings, std::vector<Family> families,
@@ -93,14 +102,24 @@ SuiteResult assemble(const Plan& plan, const SuiteContext& ctx, const std::vecto
   }
   CheckList checks = plan.checks;
   record(checks, plan, table);
-  const auto kept = agreement::disagreement_cases<io::TriPair>(
-      table, agreement::kept_disagreements(table, plan.settings.max_disagreements),
-      [&plan](std::size_t f, long k) { return tritri::family_pair(plan.seed, f, plan.families.at(f), k); });
-  io::write_file_atomic(ctx.out_dir + "/" + kDisagreementFile, io::tri_pairs_to_json(kept).dump() + "\n");
+  const std::vector<agreement::Disagreement> kept_d = agreement::kept_disagreements(table, plan.settings.max_disagreements);
+  auto kept = agreement::disagreement_cases<io::TriPair>(
+      table, kept_d, [&plan](std::size_t f, long k) { return tritri::family_pair(plan.seed, f, plan.families.at(f), k); });
+  std::vector<std::string> kept_ids;
+  for (std::size_t k = 0; k < kept.size(); ++k) kept[k].truth = kept_d[k].truth.hit, kept_ids.push_back(kept[k].id);
+  io::Json doc = io::tri_pairs_to_json(kept);
+  agreement::label_entries(doc, "pairs", table.engines, kept_d, nullptr);
+  const std::string path = ctx.out_dir + "/" + kDisagreementFile;
+  io::write_file_atomic(path, doc.dump() + "\n");
+  const auto per_engine = agreement::table_disagreements(table, door_options(plan), kept_d, kept_ids);
+  const agreement::ReplayCommand replay{"tecido tritri", "--pairs"};
+  res.stderr_lines =
+      agreement::stderr_lines("tritri", replay, std::filesystem::absolute(path).lexically_normal().string(), per_engine);
   res.markdown = tritri::method_markdown(plan.settings, ctx.seed, kReferee, plan.families) +
                  tritri::outside_markdown(plan.outside) + tritri::agreement_table(plan.families, table) + "\n" +
                  tritri::conclusions_markdown(plan.families, table, kReferee, outside_names(plan)) +
-                 tritri::disagreements_markdown(kept.size(), agreement::disagreements_found(table), kDisagreementFile);
+                 tritri::disagreements_markdown(kept.size(), agreement::disagreements_found(table), kDisagreementFile) +
+                 agreement::replay_markdown(replay, std::string("DIR/") + kDisagreementFile, per_engine);
   res.data = tritri::table_json(plan.families, table);
   res.checks = checks.finish();
   return res;

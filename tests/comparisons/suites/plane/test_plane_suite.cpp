@@ -121,8 +121,22 @@ TEST(PlaneSuite, TheLiarScoresTheShareOfCasesThatHit) {
   EXPECT_DOUBLE_EQ(c.at("plane/never/agreement/random").value, 1.0 - hits / n);
   const auto file = nlohmann::json::parse(testing::slurp(f.dir / "plane" / "disagreements.json"));
   long liar_random = 0;
-  for (const auto& x : file["cases"]) liar_random += x["id"].get<std::string>().rfind("liar:random/", 0) == 0;
+  for (const auto& x : file["cases"]) {
+    const std::string id = x["id"];
+    liar_random += id.rfind("liar:random/", 0) == 0;
+    // Each entry names its engine, its answer and the referee's, and the referee's hit as truth.
+    EXPECT_EQ(id.rfind(x["engine"].get<std::string>() + ":", 0), 0u) << id;
+    EXPECT_NE(x["answer"]["hit"], x["referee"]["hit"]) << id;
+    EXPECT_EQ(x["truth"], x["referee"]["hit"]) << id;
+    EXPECT_EQ(x["referee"]["t"].is_null(), !x["referee"]["hit"].get<bool>()) << id;
+  }
   EXPECT_EQ(liar_random, f.plan.settings.random_cases - hits);
+  // Misses and false hits apart: the liar's random disagreements are all false hits, named on stderr.
+  const SuiteResult res = f.assembled(f.results);
+  bool named = false;
+  for (const std::string& line : res.stderr_lines)
+    named = named || line.rfind("plane: liar: 0 misses (false negatives), ", 0) == 0;
+  EXPECT_TRUE(named);
 }
 
 TEST(PlaneSuite, AThrowingCategoryFailsItsGroupsChecksWithTheReason) {

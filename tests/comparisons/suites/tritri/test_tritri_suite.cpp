@@ -10,9 +10,11 @@
 #include "tests/support/cli_runner.h"
 #include "tests/support/tolerance_file.h"
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <filesystem>
 #include <stdexcept>
 
 namespace tecido::suites {
@@ -67,7 +69,28 @@ TEST(TritriSuite, AThrowingFamilyFailsItsChecksWithTheReason) {
   EXPECT_NE(r.markdown.find("Family `broken` failed"), std::string::npos);
   const auto file = nlohmann::json::parse(testing::slurp(dir / "tritri" / "disagreements.json"));
   EXPECT_EQ(file["pairs"].size(), static_cast<std::size_t>(set.random_pairs - intersecting));
-  for (const auto& p : file["pairs"]) EXPECT_EQ(p["id"].get<std::string>().rfind("liar:random/", 0), 0u);
+  for (const auto& p : file["pairs"]) {
+    EXPECT_EQ(p["id"].get<std::string>().rfind("liar:random/", 0), 0u);
+    // Each names its engine and both answers: the liar's hit where the referee says none.
+    EXPECT_EQ(p["engine"], "liar");
+    EXPECT_EQ(p["answer"], nlohmann::json::parse(R"({"hit":true})"));
+    EXPECT_EQ(p["referee"], nlohmann::json::parse(R"({"hit":false})"));
+    EXPECT_EQ(p["truth"], false);
+  }
+  // Misses and false hits apart: every disagreement of the liar is a false hit.
+  const long false_hits = set.random_pairs - intersecting;
+  EXPECT_NE(r.markdown.find(fmt::format("{}/{} ({} false hits)", intersecting, set.random_pairs, false_hits)),
+            std::string::npos) << r.markdown;
+  EXPECT_NE(r.markdown.find("false hits on random"), std::string::npos);
+  ASSERT_EQ(r.stderr_lines.size(), 1u);
+  EXPECT_EQ(r.stderr_lines[0].rfind(fmt::format("tritri: liar: 0 misses (false negatives), {} false hits (false "
+                                                "positives); first: liar:random/",
+                                                false_hits),
+                                    0),
+            0u) << r.stderr_lines[0];
+  EXPECT_NE(r.stderr_lines[0].find("--pairs " + std::filesystem::absolute(dir / "tritri" / "disagreements.json").lexically_normal().string() +
+                                   " --engines liar --of-engine liar --json"),
+            std::string::npos) << r.stderr_lines[0];
   std::filesystem::remove_all(dir);
 }
 
