@@ -42,7 +42,7 @@ io::PlaneCase through(Rng& r, const BoundedPlane& p, const Vec3& c) {
   Vec3 d = r.unit_vector();
   if (std::abs(d.dot(p.normal)) < 0.2) d += p.normal;
   const double a = r.uniform(0.05, 1.5), b = r.uniform(0.05, 1.5);
-  return {"", p, c - a * d, c + b * d};
+  return {"", p, c - a * d, c + b * d, {}};
 }
 
 /// random_case at `offset` from the origin (0: the random category itself).
@@ -50,7 +50,7 @@ io::PlaneCase box_case(Rng& r, double offset) {
   const Vec3 shift = offset * r.unit_vector();
   const BoundedPlane p = random_plane(r, shift + r.in_box(-0.5, 0.5));
   const Vec3 to = shift + r.in_box(-2.5, 2.5);
-  return {"", p, shift + r.in_box(-2.5, 2.5), to};
+  return {"", p, shift + r.in_box(-2.5, 2.5), to, {}};
 }
 
 }  // namespace
@@ -93,7 +93,7 @@ io::PlaneCase grazing_case(Rng& r, long) {
   const double tilt = std::pow(10.0, r.uniform(-12, -3));
   const Vec3 d = (t + tilt * sign(r) * p.normal).normalized();
   const double a = r.uniform(0.1, 1.0), b = r.uniform(0.1, 1.0);
-  return {"", p, c - a * d, c + b * d};
+  return {"", p, c - a * d, c + b * d, {}};
 }
 
 /// On an axis-aligned plane at a dyadic height (flat_plane): a segment parallel to it, 1 .. 2^-39
@@ -103,7 +103,7 @@ io::PlaneCase parallel_case(Rng& r, long) {
   const double dz = std::ldexp(1.0, -static_cast<int>(r.below(40)));  // 1 down to 2^-39
   const double z = p.position.z() + sign(r) * dz;
   const Vec3 to = flat_point(r, -3, 3, -3, 3, z);
-  return {"", p, flat_point(r, -3, 3, -3, 3, z), to};
+  return {"", p, flat_point(r, -3, 3, -3, 3, z), to, {}};
 }
 
 /// On such a plane: a segment lying exactly in it, inside, across or beside the rectangle.
@@ -111,7 +111,7 @@ io::PlaneCase in_plane_case(Rng& r, long) {
   const BoundedPlane p = flat_plane(r);
   const double z = p.position.z();
   const Vec3 to = flat_point(r, -2, 3, -1.5, 2.5, z);
-  return {"", p, flat_point(r, -2, 3, -1.5, 2.5, z), to};
+  return {"", p, flat_point(r, -2, 3, -1.5, 2.5, z), to, {}};
 }
 
 namespace {
@@ -129,14 +129,14 @@ std::pair<Vec3, Vec3> on_and_off(Rng& r, const BoundedPlane& p) {
 io::PlaneCase start_on_case(Rng& r, long) {
   const BoundedPlane p = flat_plane(r);
   const auto [on, off] = on_and_off(r, p);
-  return {"", p, on, off};
+  return {"", p, on, off, {}};
 }
 
 /// On such a plane: a segment whose second end point lies exactly on the plane.
 io::PlaneCase end_on_case(Rng& r, long) {
   const BoundedPlane p = flat_plane(r);
   const auto [on, off] = on_and_off(r, p);
-  return {"", p, off, on};
+  return {"", p, off, on, {}};
 }
 
 const std::vector<Category>& categories() {
