@@ -99,6 +99,21 @@ TEST(SceneReader, GoodSceneLoads) {
   EXPECT_EQ(s.integrator, IntegratorKind::Symplectic);
 }
 
+// The cloth's typo of the issue: the allowed keys and both near ones, through the CLI.
+TEST(SceneReader, UnknownClothKeySuggestsTheNearest) {
+  const auto dir = testing::temp_dir("cloth-typo");
+  std::string text = std::string(kClothNoK) + "}";
+  text.replace(text.find("\"stiffness_b\""), 13, "\"stiffness\"");
+  testing::write_text(dir / "c.json", text);
+  const auto r = run_cli("run '" + (dir / "c.json").string() + "'");
+  EXPECT_EQ(r.code, 2) << r.err;
+  EXPECT_EQ(r.err, "tecido: " + (dir / "c.json").string() +
+                       ": /cloth/stiffness: unknown key \"stiffness\" (allowed: rows, cols, spacing, origin, axis_u, "
+                       "axis_v, total_mass, stiffness_b, stiffness_a, damping, elasticity, pins; did you mean \"stiffness_b\" "
+                       "or \"stiffness_a\"?); keys starting with '_' are comments\n");
+  std::filesystem::remove_all(dir);
+}
+
 // Without a plane or obstacle nothing can bounce the cloth: it needs no k. An obstacle with its
 // own elasticity decides its contacts alone: the cloth needs none either. Given, k is the cloth's.
 TEST(SceneReader, ClothNeedsElasticityOnlyWhereSomethingCanHitIt) {
