@@ -6,6 +6,8 @@
 // A scene with `self_collision` runs with its post-step hook; the result then carries
 // "self_collision": {checks, contact_checks, pairs, ...}. Obstacles are drawn into every frame at
 // that frame's time (moving ones move).
+// A run that goes unstable is a result (exit 0); where the scene has springs, one line on stderr
+// gives the step its stiffest spring allows for the integrator used (suites/stability/step_hint.h).
 // Every limit is checked before the first step: the options' domains (cli/option_checks.h), the
 // scene's sizes (io/scene_json.h), the work limit (io/work_limit.h), the frame count and that
 // DIR can be written.
@@ -20,6 +22,7 @@
 #include "comparisons/io/run_result.h"
 #include "comparisons/io/scene_json.h"
 #include "comparisons/io/work_limit.h"
+#include "comparisons/suites/stability/step_hint.h"
 #include "core/simulation/self_collision_response.h"
 #include "core/simulation/simulation.h"
 
@@ -136,6 +139,13 @@ void print_summary(const Simulation& sim, const Scene& scene, const io::Json& re
               << " steps (contacts resolved without bisection)\n";
 }
 
+/// Why an unstable run may have blown up, on stderr (stdout stays the result alone with --json).
+void print_step_hint(const Simulation& sim, const Scene& scene) {
+  if (!sim.instability()) return;
+  if (const auto hint = suites::stability::stiffest_spring_step(scene))
+    std::cerr << suites::stability::step_hint_line(*hint, scene) << "\n";
+}
+
 int run(const RunOptions& o) {
   const Scene scene = prepared_scene(o);
   const long long every = o.out.empty() ? 1 : frame_interval(o, scene);
@@ -163,6 +173,7 @@ int run(const RunOptions& o) {
   } else {
     print_summary(sim, scene, result, self_collision.get(), frames.get(), o, plot_note);
   }
+  print_step_hint(sim, scene);
   return 0;
 }
 
