@@ -1,7 +1,8 @@
 // tecido run SCENE.json [--integrator X] [--dt H] [--steps N] [--json] [--out DIR]
 //                       [--frame-every K] [--vtk] [--max-work W]
 // With --out DIR: DIR/result.json, the frames DIR/frames/frame_<step>.obj (every K-th step,
-// the first and the last; default K = ceil(steps / 100)), .vtk as well with --vtk, and
+// the first and the last; default K = ceil(steps / 100); an earlier run's frames there are
+// removed first, with a note on stderr, io/stale_frames.h), .vtk as well with --vtk, and
 // DIR/cloth.svg, four key frames drawn by gnuplot (skipped, with a note, without gnuplot).
 // A scene with `self_collision` runs with its post-step hook; the result then carries
 // "self_collision": {checks, contact_checks, pairs, ...}. Obstacles are drawn into every frame at
@@ -21,6 +22,7 @@
 #include "comparisons/io/output_dir.h"
 #include "comparisons/io/run_result.h"
 #include "comparisons/io/scene_json.h"
+#include "comparisons/io/stale_frames.h"
 #include "comparisons/io/work_limit.h"
 #include "comparisons/suites/stability/step_hint.h"
 #include "core/simulation/self_collision_response.h"
@@ -153,6 +155,9 @@ int run(const RunOptions& o) {
   if (!o.out.empty()) {
     io::check_output_dir(o.out + "/frames");
     out_lock.emplace(o.out);
+    // Under the lock: no other run is writing these. Only this run's frames may remain.
+    if (const std::size_t stale = io::remove_stale_frames(o.out + "/frames"))
+      std::cerr << "tecido: note: removed " << stale << " frame files of an earlier run from " << o.out << "/frames\n";
   }
   Simulation sim(scene);
   const auto self_collision = install_self_collision(sim);
