@@ -1,6 +1,6 @@
 // tecido run SCENE.json [--integrator X] [--dt H] [--steps N] [--json] [--out DIR]
 //                       [--frame-every K] [--vtk] [--max-work W]
-// With --out DIR: DIR/result.json, the frames DIR/frames/frame_<step>.obj (every K-th step,
+// With --out DIR: DIR/result.json (the --json result and "tecido": {version, commit, command_line}), the frames DIR/frames/frame_<step>.obj (every K-th step,
 // the first and the last; default K = ceil(steps / 100); an earlier run's frames there are
 // removed first, with a note on stderr, io/stale_frames.h), .vtk as well with --vtk, and
 // DIR/cloth.svg, four key frames drawn by gnuplot (skipped, with a note, without gnuplot).
@@ -20,6 +20,7 @@
 #include "comparisons/io/input_error.h"
 #include "comparisons/io/limits.h"
 #include "comparisons/io/output_dir.h"
+#include "comparisons/io/provenance.h"
 #include "comparisons/io/run_result.h"
 #include "comparisons/io/scene_json.h"
 #include "comparisons/io/stale_frames.h"
@@ -171,7 +172,12 @@ int run(const RunOptions& o) {
   }
   io::Json result = io::run_result_json(sim);
   if (self_collision) result["self_collision"] = self_collision_json(*self_collision);
-  if (!o.out.empty()) io::write_file_atomic(o.out + "/result.json", result.dump(2) + "\n");
+  if (!o.out.empty()) {
+    // The file outlives the command: it names what made it. stdout is the command's own answer.
+    io::Json file = result;
+    file["tecido"] = io::provenance_json();
+    io::write_file_atomic(o.out + "/result.json", file.dump(2) + "\n");
+  }
   if (o.json) {
     if (frames && !plot_note.empty()) std::cerr << "tecido: note: " << plot_note << "\n";
     std::cout << result.dump() << "\n";
