@@ -1,7 +1,7 @@
 // tecido run SCENE.json [--integrator X] [--dt H] [--steps N] [--json] [--out DIR]
 //                       [--frame-every K] [--vtk] [--max-work W]
-// With --out DIR: DIR/result.json (the --json result and "tecido": {version, commit, command_line}), the frames DIR/frames/frame_<step>.obj (every K-th step,
-// the first and the last; default K = ceil(steps / 100); an earlier run's frames there are
+// With --out DIR: DIR/result.json (the --json result and "tecido": {version, commit,
+// command_line}), the frames DIR/frames/frame_<step>.obj (every K-th step, the first and the last; default K = ceil(steps / 100); an earlier run's frames there are
 // removed first, with a note on stderr, io/stale_frames.h), .vtk as well with --vtk, and
 // DIR/cloth.svg, four key frames drawn by gnuplot (skipped, with a note, without gnuplot).
 // A scene with `self_collision` runs with its post-step hook; the result then carries
@@ -198,7 +198,9 @@ Command add_run(CLI::App& app) {
   o->steps_opt = sub->add_option("--steps", o->steps, "Number of steps (overrides the scene)")
                      ->check(integer_in(0, io::kMaxSteps));
   sub->add_flag("--json", o->json, "Print the result as one JSON object");
-  CLI::Option* out = sub->add_option("--out", o->out, "Directory for result.json, frames/ (OBJ per frame) and cloth.svg")
+  CLI::Option* out = sub->add_option("--out", o->out,
+                                     "Directory for result.json, frames/ (OBJ per frame; an earlier run's frames there are "
+                                     "removed) and cloth.svg")
                          ->check(non_empty());
   o->every_opt = sub->add_option("--frame-every", o->frame_every,
                                  "With --out: write every K-th step's frame (default: about 100 frames)")
