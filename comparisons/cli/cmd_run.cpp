@@ -1,9 +1,10 @@
 // tecido run SCENE.json [--integrator X] [--dt H] [--steps N] [--json] [--out DIR]
 //                       [--frame-every K] [--vtk] [--max-work W]
 // With --out DIR: DIR/result.json (the --json result and "tecido": {version, commit,
-// command_line}), the frames DIR/frames/frame_<step>.obj (every K-th step, the first and the last; default K = ceil(steps / 100); an earlier run's frames there are
-// removed first, with a note on stderr, io/stale_frames.h), .vtk as well with --vtk, and
-// DIR/cloth.svg, four key frames drawn by gnuplot (skipped, with a note, without gnuplot).
+// command_line}), the frames DIR/frames/frame_<step>.obj (every K-th step, the first and the
+// last; default K = ceil(steps / 100); an earlier run's frames there are removed first, with a
+// note on stderr, io/stale_frames.h), .vtk as well with --vtk, and DIR/cloth.svg, four key
+// frames drawn by gnuplot (skipped, with a note, without gnuplot).
 // A scene with `self_collision` runs with its post-step hook; the result then carries
 // "self_collision": {checks, contact_checks, pairs, ...}. Obstacles are drawn into every frame at
 // that frame's time (moving ones move).
