@@ -49,9 +49,11 @@ std::string step_hint_line(const StepHint& h, const Scene& scene) {
   if (h.bounded)
     return fmt::format("tecido: hint: {} is stable on {} for dt <= {:.6g} s (h omega <= {:.6g}); this run used dt = {:.6g} s",
                        name, spring, h.dt_max, h.h_omega, scene.dt);
+  // The growers' step can be absurdly small for a long run: name the step a stable method allows too.
   return fmt::format("tecido: hint: {} amplifies an undamped spring at every step; on {} it grows at most {:g}x over this "
-                     "run's {:.6g} s for dt <= {:.6g} s; this run used dt = {:.6g} s",
-                     name, spring, h.growth_bound, h.duration, h.dt_max, scene.dt);
+                     "run's {:.6g} s for dt <= {:.6g} s (symplectic is stable for dt <= {:.6g} s); this run used dt = {:.6g} s",
+                     name, spring, h.growth_bound, h.duration, h.dt_max,
+                     stable_limit(IntegratorKind::Symplectic) / h.omega, scene.dt);
 }
 
 }  // namespace tecido::suites::stability

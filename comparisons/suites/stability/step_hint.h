@@ -33,7 +33,8 @@ struct StepHint {
 /// a positive omega (no spring, zero stiffness, or both ends pinned).
 std::optional<StepHint> stiffest_spring_step(const Scene& scene);
 
-/// One line for stderr, "tecido: hint: ...", naming the integrator, dt_max and the spring.
+/// One line for stderr, "tecido: hint: ...", naming the integrator, dt_max and the spring (for
+/// euler and midpoint also symplectic Euler's stable step, which a long run may need instead).
 std::string step_hint_line(const StepHint& hint, const Scene& scene);
 
 }  // namespace tecido::suites::stability

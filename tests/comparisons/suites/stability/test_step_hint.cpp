@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdlib>
 #include <functional>
 
 namespace tecido {
@@ -66,6 +67,18 @@ TEST(StepHint, EulerAndMidpointFromTheRunsGrowth) {
   ASSERT_TRUE(m.has_value());
   const double cm = growth_root([](double c) { return 0.5 * std::log1p(c * c * c * c / 4.0); }, t_omega);
   EXPECT_NEAR(m->dt_max, cm / kOmega, 1e-6 * cm / kOmega);
+  // The line names the growth step and, as the way out, symplectic Euler's stable step 2 / omega.
+  const std::string line = suites::stability::step_hint_line(*e, hint_scene("euler"));
+  EXPECT_EQ(line.rfind("tecido: hint: euler amplifies an undamped spring at every step; on the stiffest spring (particles 0 "
+                       "and 1, k = 100 N/m, omega = sqrt(k (1/m_i + 1/m_j)) = 11.547 rad/s) it grows at most 1000x over "
+                       "this run's 1000 s for dt <= ",
+                       0),
+            0u)
+      << line;
+  const auto sym = line.find("(symplectic is stable for dt <= ");
+  ASSERT_NE(sym, std::string::npos) << line;
+  EXPECT_NEAR(std::strtod(line.c_str() + sym + 32, nullptr), 2.0 / kOmega, 1e-5 * 2.0 / kOmega) << line;
+  EXPECT_NE(line.find("this run used dt = 0.5 s"), std::string::npos) << line;
 }
 
 TEST(StepHint, NoneWithoutASpringThatCanOscillate) {
