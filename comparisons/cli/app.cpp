@@ -1,5 +1,7 @@
 #include "comparisons/cli/app.h"
 
+#include "comparisons/io/provenance.h"
+
 #include <algorithm>
 
 namespace tecido::cli {
@@ -13,6 +15,7 @@ std::unique_ptr<CommandLine> make_command_line() {
   auto cl = std::make_unique<CommandLine>();
   cl->app.require_subcommand(1);
   cl->app.set_help_all_flag("--help-all", "Show help for every subcommand");
+  cl->app.set_version_flag("--version", io::version_line(), "Print the version and the commit it was built from");
   auto registry = command_registry();
   std::sort(registry.begin(), registry.end());
   for (const auto& entry : registry) {

@@ -1,11 +1,15 @@
 // tecido run SCENE.json [--integrator X] [--dt H] [--steps N] [--json] [--out DIR]
 //                       [--frame-every K] [--vtk] [--max-work W]
-// With --out DIR: DIR/result.json, the frames DIR/frames/frame_<step>.obj (every K-th step,
-// the first and the last; default K = ceil(steps / 100)), .vtk as well with --vtk, and
-// DIR/cloth.svg, four key frames drawn by gnuplot (skipped, with a note, without gnuplot).
+// With --out DIR: DIR/result.json (the --json result and "tecido": {version, commit,
+// command_line}), the frames DIR/frames/frame_<step>.obj (every K-th step, the first and the
+// last; default K = ceil(steps / 100); an earlier run's frames there are removed first, with a
+// note on stderr, io/stale_frames.h), .vtk as well with --vtk, and DIR/cloth.svg, four key
+// frames drawn by gnuplot (skipped, with a note, without gnuplot).
 // A scene with `self_collision` runs with its post-step hook; the result then carries
 // "self_collision": {checks, contact_checks, pairs, ...}. Obstacles are drawn into every frame at
 // that frame's time (moving ones move).
+// A run that goes unstable is a result (exit 0); where the scene has springs, one line on stderr
+// gives the step its stiffest spring allows for the integrator used (suites/stability/step_hint.h).
 // Every limit is checked before the first step: the options' domains (cli/option_checks.h), the
 // scene's sizes (io/scene_json.h), the work limit (io/work_limit.h), the frame count and that
 // DIR can be written.
@@ -17,9 +21,12 @@
 #include "comparisons/io/input_error.h"
 #include "comparisons/io/limits.h"
 #include "comparisons/io/output_dir.h"
+#include "comparisons/io/provenance.h"
 #include "comparisons/io/run_result.h"
 #include "comparisons/io/scene_json.h"
+#include "comparisons/io/stale_frames.h"
 #include "comparisons/io/work_limit.h"
+#include "comparisons/suites/stability/step_hint.h"
 #include "core/simulation/self_collision_response.h"
 #include "core/simulation/simulation.h"
 
@@ -136,6 +143,13 @@ void print_summary(const Simulation& sim, const Scene& scene, const io::Json& re
               << " steps (contacts resolved without bisection)\n";
 }
 
+/// Why an unstable run may have blown up, on stderr (stdout stays the result alone with --json).
+void print_step_hint(const Simulation& sim, const Scene& scene) {
+  if (!sim.instability()) return;
+  if (const auto hint = suites::stability::stiffest_spring_step(scene))
+    std::cerr << suites::stability::step_hint_line(*hint, scene) << "\n";
+}
+
 int run(const RunOptions& o) {
   const Scene scene = prepared_scene(o);
   const long long every = o.out.empty() ? 1 : frame_interval(o, scene);
@@ -143,6 +157,9 @@ int run(const RunOptions& o) {
   if (!o.out.empty()) {
     io::check_output_dir(o.out + "/frames");
     out_lock.emplace(o.out);
+    // Under the lock: no other run is writing these. Only this run's frames may remain.
+    if (const std::size_t stale = io::remove_stale_frames(o.out + "/frames"))
+      std::cerr << "tecido: note: removed " << stale << " frame files of an earlier run from " << o.out << "/frames\n";
   }
   Simulation sim(scene);
   const auto self_collision = install_self_collision(sim);
@@ -156,13 +173,19 @@ int run(const RunOptions& o) {
   }
   io::Json result = io::run_result_json(sim);
   if (self_collision) result["self_collision"] = self_collision_json(*self_collision);
-  if (!o.out.empty()) io::write_file_atomic(o.out + "/result.json", result.dump(2) + "\n");
+  if (!o.out.empty()) {
+    // The file outlives the command: it names what made it. stdout is the command's own answer.
+    io::Json file = result;
+    file["tecido"] = io::provenance_json();
+    io::write_file_atomic(o.out + "/result.json", file.dump(2) + "\n");
+  }
   if (o.json) {
     if (frames && !plot_note.empty()) std::cerr << "tecido: note: " << plot_note << "\n";
     std::cout << result.dump() << "\n";
   } else {
     print_summary(sim, scene, result, self_collision.get(), frames.get(), o, plot_note);
   }
+  print_step_hint(sim, scene);
   return 0;
 }
 
@@ -176,7 +199,9 @@ Command add_run(CLI::App& app) {
   o->steps_opt = sub->add_option("--steps", o->steps, "Number of steps (overrides the scene)")
                      ->check(integer_in(0, io::kMaxSteps));
   sub->add_flag("--json", o->json, "Print the result as one JSON object");
-  CLI::Option* out = sub->add_option("--out", o->out, "Directory for result.json, frames/ (OBJ per frame) and cloth.svg")
+  CLI::Option* out = sub->add_option("--out", o->out,
+                                     "Directory for result.json, frames/ (OBJ per frame; an earlier run's frames there are "
+                                     "removed) and cloth.svg")
                          ->check(non_empty());
   o->every_opt = sub->add_option("--frame-every", o->frame_every,
                                  "With --out: write every K-th step's frame (default: about 100 frames)")

@@ -5,6 +5,7 @@
 #include "comparisons/cli/error_line.h"
 #include "comparisons/io/input_error.h"
 #include "comparisons/io/output_error.h"
+#include "comparisons/io/provenance.h"
 #include "core/platform/simd_level.h"
 
 #include <algorithm>
@@ -74,12 +75,15 @@ int main(int argc, char** argv) {
     tecido::cli::report_error(std::cerr, "unknown command \"" + std::string(argv[1]) + "\" (known: " + known + "; see --help)");
     return 2;
   }
+  tecido::io::set_command_line(argc, argv);  // for the reports the command writes
   const auto cl = tecido::cli::make_command_line();
   try {
     cl->app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
     return tecido::cli::check_stdout(cl->app.exit(e));
   } catch (const CLI::CallForAllHelp& e) {
+    return tecido::cli::check_stdout(cl->app.exit(e));
+  } catch (const CLI::CallForVersion& e) {
     return tecido::cli::check_stdout(cl->app.exit(e));
   } catch (const CLI::ValidationError& e) {
     tecido::cli::report_error(std::cerr, e.what());  // already "--option: problem"

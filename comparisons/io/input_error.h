@@ -1,6 +1,7 @@
 #pragma once
 /// The one error every reader throws on bad input: file, location (a JSON pointer such as
-/// /particles/3/mass, or "line N" for text formats) and the problem. The CLI prints what() as
+/// /particles/3/mass; "line L, column C" for a JSON syntax error, where no value exists to point at;
+/// "line N" for text formats) and the problem. The CLI prints what() as
 /// one line on stderr and exits 2 (docs/design.md section 3).
 #include <stdexcept>
 #include <string>

@@ -1,5 +1,6 @@
 #include "comparisons/io/json_reader.h"
 
+#include "comparisons/io/edit_distance.h"
 #include "comparisons/io/limits.h"
 #include "comparisons/io/text_file.h"
 
@@ -121,6 +122,17 @@ std::string from_marker(const std::string& what, const char* marker) {
   const auto pos = what.find(marker);
   return pos == std::string::npos ? what : what.substr(pos);
 }
+/// "parse error at line 3, column 12: syntax error while ..." -> {"line 3, column 12", "syntax error
+/// while ..."}; a message of another shape is kept whole as the problem, at the top ("/").
+struct SyntaxError {
+  std::string where, problem;
+};
+SyntaxError split_syntax_error(const std::string& message) {
+  const std::string at = "parse error at ";
+  const auto colon = message.find(": ");
+  if (message.rfind(at, 0) != 0 || colon == std::string::npos) return {"", message};
+  return {message.substr(at.size(), colon - at.size()), message.substr(colon + 2)};
+}
 }  // namespace
 
 std::string child(const std::string& where, const std::string& key) { return where + "/" + escape(key); }
@@ -136,7 +148,9 @@ Json parse_json_text(const std::string& text, const std::string& file) {
   } catch (const Rejected& r) {
     throw InputError(file, r.where, r.problem);
   } catch (const Json::parse_error& e) {
-    throw InputError(file, strict.pointer(), "not valid JSON: " + from_marker(e.what(), "parse error"));
+    // Where the text stops being JSON, not a JSON pointer: the value there does not exist yet.
+    const SyntaxError s = split_syntax_error(from_marker(e.what(), "parse error"));
+    throw InputError(file, s.where, "not valid JSON: " + s.problem);
   } catch (const Json::out_of_range& e) {
     // nlohmann reports 1e400 and the like as "number overflow": name where it happened.
     throw InputError(file, strict.pointer(), "number is not finite (" + from_marker(e.what(), "number overflow") + ")");
@@ -240,8 +254,19 @@ void JsonReader::only_keys(const Json& obj, const std::string& where, std::initi
     if (!k.empty() && k[0] == '_') continue;
     bool ok = false;
     for (const char* name : known) ok = ok || k == name;
-    if (!ok) fail(child(where, k), "unknown key (keys starting with '_' are comments)");
+    if (!ok) fail(child(where, k), unknown_key_problem(k, std::vector<std::string>(known.begin(), known.end())));
   }
+}
+
+std::string unknown_key_problem(const std::string& key, const std::vector<std::string>& allowed) {
+  std::string list;
+  for (const std::string& a : allowed) list += (list.empty() ? "" : ", ") + a;
+  std::string guess;
+  const std::vector<std::string> nearest = nearest_words(key, allowed);
+  for (std::size_t k = 0; k < nearest.size(); ++k)
+    guess += std::string(k == 0 ? "; did you mean " : " or ") + "\"" + nearest[k] + "\"";
+  return "unknown key \"" + key + "\" (allowed: " + list + (guess.empty() ? "" : guess + "?") +
+         "); keys starting with '_' are comments";
 }
 
 }  // namespace tecido::io

@@ -11,6 +11,7 @@
 
 #include <cstdint>
 #include <string>
+#include <vector>
 
 namespace tecido::io {
 
@@ -19,7 +20,8 @@ using Json = nlohmann::json;
 /// Reads and parses a JSON file; throws InputError naming the file and the problem.
 Json read_json_file(const std::string& path);
 /// Parses JSON text (duplicate keys and nesting deeper than kMaxJsonDepth rejected while parsing,
-/// at the first offending key or level); `file` is used in messages only.
+/// at the first offending key or level; a syntax error at its "line L, column C", not a JSON
+/// pointer); `file` is used in messages only.
 Json parse_json_text(const std::string& text, const std::string& file);
 
 /// Typed access with the JSON pointer of each value, for error messages.
@@ -46,12 +48,18 @@ class JsonReader {
   /// limit of L" (the limits of comparisons/io/limits.h).
   void at_most(std::size_t count, const std::string& where, std::size_t limit, const std::string& what) const;
 
-  /// Rejects keys of obj that are not in `known` (keys starting with '_' are comments).
+  /// Rejects keys of obj that are not in `known` (keys starting with '_' are comments), naming the
+  /// allowed keys and the nearest of them (unknown_key_problem).
   void only_keys(const Json& obj, const std::string& where, std::initializer_list<const char*> known) const;
 
  private:
   std::string file_;
 };
+
+/// The problem of an unknown key: `unknown key "stiffness" (allowed: rows, ...; did you mean
+/// "stiffness_a" or "stiffness_b"?); keys starting with '_' are comments`, the guess only when close
+/// enough to be a typo (edit_distance.h, nearest_words).
+std::string unknown_key_problem(const std::string& key, const std::vector<std::string>& allowed);
 
 /// "/a/b" + "c" -> "/a/b/c"; also for array indices.
 std::string child(const std::string& where, const std::string& key);

@@ -61,7 +61,9 @@ Wind read_wind(const JsonReader& r, const Json& j, const std::string& w, std::ui
   return wind;
 }
 
-ClothGridSpec read_cloth(const JsonReader& r, const Json& j, const std::string& w) {
+/// `needs_k`: as for listed particles, a cloth that a plane or an obstacle without elasticity can
+/// hit needs its own k (no hidden default: the restitution decides every bounce).
+ClothGridSpec read_cloth(const JsonReader& r, const Json& j, const std::string& w, bool needs_k) {
   r.require_object(j, w);
   r.only_keys(j, w, {"rows", "cols", "spacing", "origin", "axis_u", "axis_v", "total_mass", "stiffness_b",
                      "stiffness_a", "damping", "elasticity", "pins"});
@@ -87,7 +89,11 @@ ClothGridSpec read_cloth(const JsonReader& r, const Json& j, const std::string& 
   c.stiffness_b = r.number_in(r.require(j, w, "stiffness_b"), child(w, "stiffness_b"), 0.0, 1e12);
   if (j.contains("stiffness_a")) c.stiffness_a = r.number_in(j["stiffness_a"], child(w, "stiffness_a"), 0.0, 1e12);
   if (j.contains("damping")) c.damping = r.number_in(j["damping"], child(w, "damping"), 0.0, 1e12);
-  if (j.contains("elasticity")) c.elasticity = r.number_in(j["elasticity"], child(w, "elasticity"), 0.0, 1.0);
+  if (j.contains("elasticity")) {
+    c.elasticity = r.number_in(j["elasticity"], child(w, "elasticity"), 0.0, 1.0);
+  } else if (needs_k) {
+    r.fail(child(w, "elasticity"), "missing required key (the scene has planes or obstacles)");
+  }
   if (j.contains("pins")) {
     const std::string wp = child(w, "pins");
     const Json& pins = r.require_array(j["pins"], wp);
@@ -190,8 +196,8 @@ void read_particles(const JsonReader& r, const Json& ps, bool needs_k, Particles
 }
 
 /// Appends the cloth once its nodes fit beside the listed particles.
-void add_cloth(const JsonReader& r, const Json& j, Scene& s) {
-  const ClothGridSpec cloth = read_cloth(r, j, "/cloth");
+void add_cloth(const JsonReader& r, const Json& j, bool needs_k, Scene& s) {
+  const ClothGridSpec cloth = read_cloth(r, j, "/cloth", needs_k);
   const std::size_t nodes = static_cast<std::size_t>(cloth.rows) * static_cast<std::size_t>(cloth.cols);
   r.at_most(s.particles.size() + nodes, "/cloth", kMaxParticles,
             "particles (" + std::to_string(s.particles.size()) + " listed and " + std::to_string(nodes) + " of the cloth)");
@@ -253,7 +259,7 @@ Scene scene_from_json(const Json& doc, const std::string& file) {
   }
 
   const bool has_planes = doc.contains("planes");
-  // Every free particle needs its own k when a plane, or an obstacle without elasticity, can hit it.
+  // Every free particle (listed or of the cloth) needs its own k when a plane, or an obstacle without elasticity, can hit it.
   const bool needs_k = has_planes || (doc.contains("obstacles") && obstacles_use_particle_k(doc["obstacles"]));
   if (has_planes) {
     const Json& planes = r.require_array(doc["planes"], "/planes");
@@ -261,7 +267,7 @@ Scene scene_from_json(const Json& doc, const std::string& file) {
   }
   if (doc.contains("contact")) read_contact(r, doc["contact"], s.contact);
   if (doc.contains("particles")) read_particles(r, doc["particles"], needs_k, s.particles);
-  if (doc.contains("cloth")) add_cloth(r, doc["cloth"], s);
+  if (doc.contains("cloth")) add_cloth(r, doc["cloth"], needs_k, s);
   if (doc.contains("self_collision")) {
     s.self_collision = read_self_collision(r, doc["self_collision"], "/self_collision");
     if (s.triangles.empty()) r.fail("/self_collision", "self-collision needs a cloth (the triangle mesh it tests)");

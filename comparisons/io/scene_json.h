@@ -21,7 +21,8 @@
 ///   edge_contacts  true | false (default false): springs against obstacle edges
 ///   contact     {"static_threshold","tangential_threshold","bisection_tolerance","max_events_per_step"}
 ///   cloth       {"rows","cols","spacing","origin","axis_u","axis_v","total_mass","stiffness_b",
-///                "stiffness_a","damping","elasticity","pins":[[r,c],..]}
+///                "stiffness_a","damping","elasticity","pins":[[r,c],..]}; "elasticity" as for particles:
+///                required when the scene has planes or an obstacle without its own elasticity
 /// Keys starting with '_' are comments; any other unknown key is an error (a typo must not
 /// silently remove a force). Sizes are bounded (comparisons/io/limits.h): particles (listed and
 /// cloth nodes), springs (listed and the cloth's) and planes are counted before any is read.

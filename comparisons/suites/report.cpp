@@ -2,6 +2,7 @@
 
 #include "comparisons/engines/outside/outside_engines.h"
 #include "comparisons/io/atomic_file.h"
+#include "comparisons/io/provenance.h"
 
 #include <fmt/format.h>
 
@@ -36,13 +37,14 @@ io::Json report_json(const std::vector<SuiteResult>& results, const SuiteContext
   io::Json j{{"seed", ctx.seed},
              {"quick", ctx.quick},
              {"tolerances", ctx.tolerances ? ctx.tolerances->file() : ""},
-             {"suites", suites}};
+             {"suites", suites},
+             {"tecido", io::provenance_json()}};
   if (ctx.outside && !ctx.outside->empty()) j["outside_engines"] = outside::doors_json(*ctx.outside);
   return j;
 }
 
 std::string report_markdown(const std::vector<SuiteResult>& results, const SuiteContext& ctx) {
-  std::string md = "# tecido report\n\n";
+  std::string md = "# tecido report\n\n" + io::provenance_markdown() + "\n\n";
   int passed = 0, failed = 0;
   for (const auto& r : results)
     for (const auto& c : r.checks) (c.pass ? passed : failed)++;

@@ -1,10 +1,10 @@
 #pragma once
 /// report.json and report.md from suite results. report.json:
-/// {"seed":S,"quick":bool,"tolerances":"file","outside_engines":[{"name","door",...}] (when any),"suites":[{"name","checks":[{"name","value",
+/// {"tecido":{"version","commit","command_line"} (io/provenance.h),"seed":S,"quick":bool,"tolerances":"file","outside_engines":[{"name","door",...}] (when any),"suites":[{"name","checks":[{"name","value",
 ///  "expected":[lo,hi],"pass","note"?,"reason"?,"tolerance"?}],"data":{...},"seconds":s}]}. A check
 ///  without a value has "value": null, "pass": false and its "reason"; an unbounded end of a band is
 ///  null; "tolerance" names the tolerance-file entries the band came from. report.md opens with a one-screen
-/// summary (per suite: checks passed/failed; the worst check and its margin), the outside engines
+/// summary (under a line naming the version, the commit and the command line; per suite: checks passed/failed; the worst check and its margin), the outside engines
 /// with their doors (when any), then each suite's section. Both are written atomically.
 #include "comparisons/suites/suite.h"
 

@@ -3,7 +3,9 @@
 #include "comparisons/engines/outside/engine_error.h"
 
 #include <dlfcn.h>
+#include <link.h>
 
+#include <filesystem>
 #include <set>
 
 namespace tecido::outside {
@@ -11,6 +13,21 @@ namespace tecido::outside {
 namespace {
 
 std::string door_of(const std::string& path) { return "plug-in " + path; }
+
+/// The file a loaded library came from, as an absolute path, so that a report names it wherever
+/// it is read from: a path with a '/' made absolute against the working directory; a bare name
+/// the file dlopen found (its link map), or the name itself when that is not known.
+std::string loaded_file(const std::string& path, void* handle) {
+  std::string file = path;
+  if (path.find('/') == std::string::npos) {
+    link_map* map = nullptr;
+    if (dlinfo(handle, RTLD_DI_LINKMAP, &map) != 0 || !map || !map->l_name || !*map->l_name) return path;
+    file = map->l_name;
+  }
+  std::error_code ec;
+  const std::filesystem::path abs = std::filesystem::absolute(file, ec);
+  return ec ? file : abs.lexically_normal().string();
+}
 
 }  // namespace
 
@@ -82,7 +99,7 @@ std::shared_ptr<PluginLibrary> PluginLibrary::load(const std::string& path) {
     dlclose(handle);
     throw;
   }
-  return std::shared_ptr<PluginLibrary>(new PluginLibrary(path, handle, table));
+  return std::shared_ptr<PluginLibrary>(new PluginLibrary(loaded_file(path, handle), handle, table));
 }
 
 PluginLibrary::~PluginLibrary() {

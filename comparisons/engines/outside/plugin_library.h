@@ -20,9 +20,10 @@ class PluginLibrary {
   PluginLibrary(const PluginLibrary&) = delete;
   PluginLibrary& operator=(const PluginLibrary&) = delete;
 
+  /// The loaded file's absolute path (as given when it could not be found out).
   const std::string& path() const { return path_; }
   const tecido_plugin& table() const { return *table_; }
-  /// "plug-in PATH (ABI N)".
+  /// "plug-in PATH (ABI N)", PATH absolute: what a report names.
   std::string door() const;
 
  private:

@@ -1,5 +1,7 @@
 #include "comparisons/suites/self_contact/document.h"
 
+#include "comparisons/io/provenance.h"
+
 #include <fmt/format.h>
 
 #include <cmath>
@@ -137,6 +139,7 @@ std::string experiment_json(const Plan& plan, const Findings& f, const std::vect
   OJson doc;
   doc["experiment"] = "self-contact";
   doc["command"] = command_line(plan.opt);
+  doc["tecido"] = from(io::provenance_json());
   doc["scene"] = plan.opt.scene_path;
   doc["seed_table"] = plan.opt.seed_table_path;
   doc["simulated_time"] = plan.settings.simulated_time;

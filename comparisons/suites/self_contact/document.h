@@ -1,6 +1,7 @@
 #pragma once
 /// experiment.json of the self-contact experiment:
-///  {"experiment":"self-contact", "command", "scene", "seed_table", "simulated_time", "quick", "seeds",
+///  {"experiment":"self-contact", "command" (the options that redo it), "tecido" (version, commit and the
+///   command line that wrote it, io/provenance.h), "scene", "seed_table", "simulated_time", "quick", "seeds",
 ///   "detectors":[..], "elasticity_as", "strength", "interpretation":{..} (the baseline reading),
 ///   "wind_model":{..},
 ///   "calibration":{"file","fitted","fit_cells","record":{..},"agreement":{"fit":{..},"prediction":{..}}},

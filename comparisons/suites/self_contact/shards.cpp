@@ -1,6 +1,7 @@
 #include "comparisons/suites/self_contact/shards.h"
 
 #include "comparisons/io/input_error.h"
+#include "comparisons/io/provenance.h"
 #include "comparisons/suites/shard_file.h"
 
 #include <fmt/format.h>
@@ -95,7 +96,8 @@ Options options_from_json(const io::JsonReader& rd, const io::Json& j, const std
 std::string shard_json(const Plan& plan, const std::vector<std::size_t>& indices, const std::vector<io::Json>& results) {
   std::string out = "{\n\"format\": " + io::Json(kFormat).dump() + ",\n\"experiment\": \"self-contact\",\n\"shard\": " +
                     io::Json::array({plan.opt.shard_index, plan.opt.shard_count}).dump() +
-                    ",\n\"options\": " + options_json(plan.opt).dump() + fmt::format(",\n\"cases\": {},\n\"results\": [", plan.cases.size());
+                    ",\n\"tecido\": " + io::provenance_json().dump() + ",\n\"options\": " + options_json(plan.opt).dump() +
+                    fmt::format(",\n\"cases\": {},\n\"results\": [", plan.cases.size());
   for (std::size_t k = 0; k < indices.size(); ++k)
     out += (k ? ",\n" : "\n") + io::Json{{"index", indices[k]}, {"result", results[k]}}.dump();
   return out + "\n]\n}\n";

@@ -5,6 +5,7 @@
 #include "comparisons/io/tri_pairs.h"
 #include "tests/support/cli_runner.h"
 #include "tests/support/outside_fixtures.h"
+#include "tests/support/rejection.h"
 
 #include <nlohmann/json.hpp>
 #include <gtest/gtest.h>
@@ -112,10 +113,14 @@ TEST(CliOutside, TritriSuiteCatchesThePluginsMisses) {
   std::filesystem::remove_all(dir);
 }
 
+// The plug-in is given by a path relative to the working directory; the report names its
+// absolute path (so that the report can be read from anywhere).
 TEST(CliOutside, OrderSuiteFitsThePluginsEulerAtOne) {
   const auto dir = testing::temp_dir("outside-order");
-  const auto r = run_cli("suite order --quick --threads 2 --plugin " + quoted(testing::kExamplePlugin) +
-                         " --engines euler-plugin --out " + quoted(dir.string()));
+  const std::filesystem::path plugin(testing::kExamplePlugin);
+  const auto r = testing::run_cli_with("cd " + quoted(plugin.parent_path().string()),
+                                       "suite order --quick --threads 2 --plugin " + quoted("./" + plugin.filename().string()) +
+                                           " --engines euler-plugin --out " + quoted(dir.string()));
   ASSERT_EQ(r.code, 0) << r.err << r.out;
   const json report = json::parse(testing::slurp(dir / "report.json"));
   const auto orders = fitted_orders(report, "euler-plugin");

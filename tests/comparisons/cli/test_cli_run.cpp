@@ -5,7 +5,10 @@
 #include <nlohmann/json.hpp>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdlib>
+#include <utility>
 
 namespace tecido {
 namespace {
@@ -83,6 +86,42 @@ TEST(CliRun, UnstableRunIsReportedNotCrashed) {
   EXPECT_EQ(j["status"], "unstable");
   EXPECT_GT(j["unstable_at_step"].get<long long>(), 0);
   EXPECT_EQ(j["instability"]["particle"], 1);
+  std::filesystem::remove_all(dir);
+}
+
+/// The number after `marker` in `text` (NaN when absent).
+double number_after(const std::string& text, const std::string& marker) {
+  const auto pos = text.find(marker);
+  return pos == std::string::npos ? NAN : std::strtod(text.c_str() + pos + marker.size(), nullptr);
+}
+
+// A step too large for the spring: still exit 0 and the result, and one line on stderr with the
+// step the spring allows. Particles of 1 and 3 kg on 100 N/m: omega = sqrt(100 (1 + 1/3)), and
+// symplectic Euler is stable for h omega <= 2 (RK4: 2 sqrt 2); dt = 0.5 s is h omega = 5.8.
+TEST(CliRun, UnstableRunHintsAtTheStepTheStiffestSpringAllows) {
+  const auto dir = testing::temp_dir("hint");
+  const std::string scene = (dir / "s.json").string();
+  testing::write_text(scene, R"({"integrator":"symplectic","dt":0.5,"steps":2000,
+    "particles":[{"position":[0,0,0],"mass":1},{"position":[1.5,0,0],"mass":3}],
+    "springs":[{"i":0,"j":1,"stiffness":100,"rest_length":1}]})");
+  const double omega = std::sqrt(100.0 * (1.0 + 1.0 / 3.0));
+  for (const auto& [integrator, limit] : {std::pair<std::string, double>{"symplectic", 2.0}, {"rk4", 2.0 * std::sqrt(2.0)}}) {
+    const auto r = run_cli("run '" + scene + "' --json --integrator " + integrator);
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_EQ(json::parse(r.out)["status"], "unstable");
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    EXPECT_EQ(r.err.rfind("tecido: hint: " + integrator + " is stable on the stiffest spring (particles 0 and 1, k = 100 N/m", 0), 0u)
+        << r.err;
+    EXPECT_NEAR(number_after(r.err, "for dt <= "), limit / omega, 1e-5 * limit / omega) << r.err;
+    EXPECT_NE(r.err.find("this run used dt = 0.5 s"), std::string::npos) << r.err;
+  }
+  // The same line without --json; none when the step is small enough (h omega = 0.12).
+  const auto text = run_cli("run '" + scene + "'");
+  EXPECT_NE(text.err.find("tecido: hint: symplectic is stable"), std::string::npos) << text.err;
+  const auto fine = run_cli("run '" + scene + "' --json --dt 0.01 --steps 100");
+  ASSERT_EQ(fine.code, 0) << fine.err;
+  EXPECT_EQ(json::parse(fine.out)["status"], "ok");
+  EXPECT_EQ(fine.err, "");
   std::filesystem::remove_all(dir);
 }
 

@@ -5,7 +5,10 @@
 //  - `tecido suite order|plane --quick` at --threads 1 and 2, twice each: report.json identical
 //    once the timings are removed ("seconds" and the ns-per-pair/case entries);
 //  - `tecido experiment self-contact --quick` (a subset of its runs) likewise.
+// Files name the command line that wrote them (comparisons/io/provenance.h), which differs in
+// --out and --threads: it is checked to be that run's, then masked (tests/support/command_line_mask.h).
 #include "tests/support/cli_runner.h"
+#include "tests/support/command_line_mask.h"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -44,10 +47,13 @@ int strip_timings(json& j) {
   return removed;
 }
 
-/// The file's JSON without timings, printed the way the CLI prints it (dump(2)): comparing these
-/// bytes compares every value exactly (doubles are printed to round-trip).
-std::string without_timings(const fs::path& file, int* removed = nullptr) {
+/// The file's JSON without timings and with its command line masked, printed the way the CLI
+/// prints it (dump(2)): comparing these bytes compares every value exactly (doubles are printed to
+/// round-trip). The command line must be the one that wrote the file (`args` in it).
+std::string without_timings(const fs::path& file, const std::string& args, int* removed = nullptr) {
   json j = json::parse(testing::slurp(file));
+  EXPECT_NE(j["tecido"]["command_line"].get<std::string>().find(args), std::string::npos) << j["tecido"];
+  j = testing::mask_command_line_json(j);
   const int n = strip_timings(j);
   if (removed) *removed = n;
   return j.dump(2);
@@ -87,7 +93,9 @@ TEST(Determinism, RunOutResultJsonIsByteIdentical) {
     const fs::path out = dir / ("out" + std::to_string(k));
     const auto r = run_cli("run '" + scene + "' --out '" + out.string() + "' --frame-every 1000");
     ASSERT_EQ(r.code, 0) << r.err;
-    bytes[k] = testing::slurp(out / "result.json");
+    const std::string text = testing::slurp(out / "result.json");
+    EXPECT_NE(text.find("--out " + out.string() + " --frame-every 1000\""), std::string::npos) << text;
+    bytes[k] = testing::mask_command_line(text);
   }
   EXPECT_FALSE(bytes[0].empty());
   EXPECT_EQ(bytes[0], bytes[1]);
@@ -102,11 +110,12 @@ void expect_thread_independent(const std::string& name, const std::string& args,
   std::vector<std::string> outputs;
   for (int threads : {1, 2, 1, 2}) {
     const fs::path out = dir / ("t" + std::to_string(threads) + "-" + std::to_string(outputs.size()));
+    const std::string tail = " --threads " + std::to_string(threads) + " --out " + out.string();
     const auto r = run_cli(args + " --threads " + std::to_string(threads) + " --out '" + out.string() + "'");
     ASSERT_TRUE(r.code == 0 || r.code == 1) << name << ": " << r.err;  // 1: a check failed, still a report
     ASSERT_TRUE(fs::exists(out / file)) << name << ": no " << file;
     int removed = 0;
-    outputs.push_back(without_timings(out / file, &removed));
+    outputs.push_back(without_timings(out / file, args + tail, &removed));
     if (expect_timings) {
       EXPECT_GT(removed, 0) << name << ": no timing entry found; did the report format change?";
     }

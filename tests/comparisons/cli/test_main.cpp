@@ -83,7 +83,7 @@ TEST_F(OutputErrors, HostileTextInAMessageStaysOnOneLine) {
   std::string key(100000, 'k');
   testing::write_text(dir_ / "long.json", "{\"dt\":0.01,\"steps\":1,\"" + key + "\":1}");
   const auto r = run_cli("run '" + (dir_ / "long.json").string() + "'");
-  expect_rejected(r, {" ... ", "unknown key (keys starting with '_' are comments)"}, "long key");
+  expect_rejected(r, {" ... ", "(allowed: integrator, dt, steps, ", "); keys starting with '_' are comments"}, "long key");
   EXPECT_LT(r.err.size(), 2100u);
 }
 

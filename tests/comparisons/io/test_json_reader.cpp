@@ -70,14 +70,55 @@ TEST(JsonReader, DuplicateKeysAreRejectedAtAnyDepthWithTheObjectsPointer) {
   EXPECT_EQ(j["99999"]["k"], 99999);
 }
 
-TEST(JsonReader, ParseErrorsNameWhereTheParserStopped) {
+// A syntax error names its line and column, never a JSON pointer (the value there does not exist).
+TEST(JsonReader, SyntaxErrorsNameTheLineAndColumnOnly) {
   try {
-    io::parse_json_text(R"({"a":[1,2,{"b":tru}]})", "bad.json");
+    // Line 3 is `  "steps": }`: the parser stops at its 12th character, the '}'.
+    io::parse_json_text("{\n  \"dt\": 0.01,\n  \"steps\": }\n", "bad.json");
     ADD_FAILURE() << "accepted";
   } catch (const io::InputError& e) {
-    EXPECT_EQ(e.where(), "/a/2/b");
-    EXPECT_NE(e.problem().find("not valid JSON: parse error at line 1"), std::string::npos) << e.problem();
+    EXPECT_EQ(e.where(), "line 3, column 12");
+    EXPECT_EQ(e.problem().rfind("not valid JSON: syntax error while parsing value", 0), 0u) << e.problem();
+    EXPECT_EQ(std::string(e.what()).rfind("bad.json: line 3, column 12: not valid JSON: ", 0), 0u) << e.what();
+    EXPECT_EQ(std::string(e.what()).find("/steps"), std::string::npos) << e.what();
   }
+  try {
+    io::parse_json_text(R"({"a":[1,2,{"b":tru}]})", "bad.json");  // "tru}" ends at the 19th character
+    ADD_FAILURE() << "accepted";
+  } catch (const io::InputError& e) {
+    EXPECT_EQ(e.where(), "line 1, column 19");
+    EXPECT_NE(e.problem().find("invalid literal"), std::string::npos) << e.problem();
+  }
+}
+
+// The CLI's line for a scene cut short: file, line and column, the problem; exit 2.
+TEST(JsonReader, CliNamesTheLineAndColumnOfASyntaxError) {
+  const auto dir = testing::temp_dir("syntax");
+  const auto file = dir / "s.json";
+  testing::write_text(file, "{\"dt\":0.01,\"steps\":}");
+  expect_rejected(run_cli("run " + testing::quoted(file.string())),
+                  {file.string() + ": line 1, column 20: not valid JSON: syntax error while parsing value"}, "syntax");
+  std::filesystem::remove_all(dir);
+}
+
+// An unknown key names the keys allowed where it stands and the nearest of them.
+TEST(JsonReader, UnknownKeyListsTheAllowedKeysAndTheNearest) {
+  EXPECT_EQ(io::unknown_key_problem("stiffness", {"rows", "stiffness_b", "stiffness_a", "pins"}),
+            "unknown key \"stiffness\" (allowed: rows, stiffness_b, stiffness_a, pins; did you mean \"stiffness_b\" or "
+            "\"stiffness_a\"?); keys starting with '_' are comments");
+  EXPECT_EQ(io::unknown_key_problem("gibberish", {"dt", "steps"}),
+            "unknown key \"gibberish\" (allowed: dt, steps); keys starting with '_' are comments");
+  const io::JsonReader r("k.json");
+  const io::Json obj = io::Json::parse(R"({"_note":"a comment","dt":1,"stpes":2})");
+  try {
+    r.only_keys(obj, "/x", {"dt", "steps"});
+    ADD_FAILURE() << "accepted";
+  } catch (const io::InputError& e) {
+    EXPECT_EQ(std::string(e.what()),
+              "k.json: /x/stpes: unknown key \"stpes\" (allowed: dt, steps; did you mean \"steps\"?); keys starting "
+              "with '_' are comments");
+  }
+  EXPECT_NO_THROW(r.only_keys(io::Json::parse(R"({"_anything":1,"dt":1})"), "/x", {"dt", "steps"}));
 }
 
 // Every command that reads JSON rejects the bomb with its one line, exit 2, and writes nothing.

@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <set>
 #include <sstream>
 
 namespace tecido {
@@ -82,6 +83,32 @@ TEST(CliRunFrames, WritesFramesPictureAndSelfCollisionBlock) {
   const auto written = nlohmann::json::parse(testing::slurp(dir / "out" / "result.json"));
   EXPECT_EQ(written["particles"], j["particles"]);
   EXPECT_EQ(written["self_collision"], j["self_collision"]);
+  std::filesystem::remove_all(dir);
+}
+
+// A second run into the same --out: the first run's frames are gone (with a note), the second's
+// are all there, and files that are not tecido's frames survive.
+TEST(CliRunFrames, AnEarlierRunsFramesAreRemovedAndNothingElse) {
+  const auto dir = testing::temp_dir("stale");
+  const std::string scene = (dir / "cloth.json").string();
+  testing::write_text(scene, kCloth);
+  const auto out = dir / "out";
+  const auto first = run_cli("run '" + scene + "' --json --out '" + out.string() + "' --frame-every 10 --vtk");
+  ASSERT_EQ(first.code, 0) << first.err;
+  EXPECT_EQ(first.err.find("earlier run"), std::string::npos) << first.err;
+  testing::write_text(out / "frames" / "notes.txt", "mine");
+  testing::write_text(out / "frames" / "frame_12.obj", "not tecido's name");
+  const auto second = run_cli("run '" + scene + "' --json --out '" + out.string() + "' --frame-every 50");
+  ASSERT_EQ(second.code, 0) << second.err;
+  // 13 frames (0, 10, ..., 120) as OBJ and VTK.
+  EXPECT_NE(second.err.find("tecido: note: removed 26 frame files of an earlier run from " + out.string() + "/frames\n"),
+            std::string::npos)
+      << second.err;
+  std::set<std::string> left;
+  for (const auto& e : std::filesystem::directory_iterator(out / "frames")) left.insert(e.path().filename().string());
+  EXPECT_EQ(left, (std::set<std::string>{"frame_000000.obj", "frame_000050.obj", "frame_000100.obj", "frame_000120.obj",
+                                         "notes.txt", "frame_12.obj"}));
+  EXPECT_EQ(testing::slurp(out / "frames" / "notes.txt"), "mine");
   std::filesystem::remove_all(dir);
 }
 

@@ -18,6 +18,10 @@ const char* kGood = R"({"gravity":[0,0,-9.81],"integrator":"symplectic","dt":0.0
  "springs":[{"i":0,"j":1,"stiffness":4.0,"rest_length":1.0}],
  "planes":[{"position":[0,0,0],"normal":[0,0,1],"forward":[1,0,0],"half_extents":[2,2],"friction":0.5}]})";
 
+/// A 3 x 3 cloth over the origin without "elasticity" (the document is left open for more keys).
+const char* kClothNoK = R"({"dt":0.01,"steps":1,"gravity":[0,0,-9.81],"cloth":{"rows":3,"cols":3,"spacing":0.1,)"
+                        R"("origin":[0,0,1],"axis_u":[1,0,0],"axis_v":[0,1,0],"total_mass":0.09,"stiffness_b":5})";
+
 struct BadScene {
   const char* name;
   std::string text;
@@ -69,6 +73,13 @@ std::vector<BadScene> bad_scenes() {
  "springs":[{"i":0,"j":1,"stiffness":4.0,"rest_length":1.0}],)", "\"particles\":[],"), "/particles", "no particles"},
       {"negative_stiffness", replace(g, "\"stiffness\":4.0", "\"stiffness\":-4.0"), "/springs/0/stiffness", "outside"},
       {"pinned_not_bool", replace(g, "\"pinned\":false", "\"pinned\":\"no\""), "/particles/0/pinned", "expected true or false"},
+      // A cloth is held to the particles' rule: no hidden k where a plane or an obstacle can hit it.
+      {"cloth_without_elasticity_with_planes", std::string(kClothNoK) + R"(,"planes":[{"position":[0,0,0],"normal":[0,0,1],)"
+                                                R"("forward":[1,0,0],"half_extents":[1,1]}]})",
+       "/cloth/elasticity", "missing required key (the scene has planes or obstacles)"},
+      {"cloth_without_elasticity_with_obstacle", std::string(kClothNoK) + R"(,"obstacles":[{"sphere":{"center":[0,0,-1],)"
+                                                   R"("radius":0.5}}]})",
+       "/cloth/elasticity", "missing required key (the scene has planes or obstacles)"},
       // 16.7 M nodes would need ~4 GB and fail in the allocator minutes later (found by fuzz_scene).
       {"huge_cloth", R"({"dt":0.01,"steps":0,"cloth":{"rows":4096,"cols":4096,"spacing":0.001,"origin":[0,0,0],)"
                      R"("axis_u":[1,0,0],"axis_v":[0,1,0],"total_mass":1,"stiffness_b":1}})",
@@ -86,6 +97,36 @@ TEST(SceneReader, GoodSceneLoads) {
   EXPECT_FALSE(s.forces.air_drag.has_value());
   EXPECT_FALSE(s.forces.wind.has_value());
   EXPECT_EQ(s.integrator, IntegratorKind::Symplectic);
+}
+
+// The cloth's typo of the issue: the allowed keys and both near ones, through the CLI.
+TEST(SceneReader, UnknownClothKeySuggestsTheNearest) {
+  const auto dir = testing::temp_dir("cloth-typo");
+  std::string text = std::string(kClothNoK) + "}";
+  text.replace(text.find("\"stiffness_b\""), 13, "\"stiffness\"");
+  testing::write_text(dir / "c.json", text);
+  const auto r = run_cli("run '" + (dir / "c.json").string() + "'");
+  EXPECT_EQ(r.code, 2) << r.err;
+  EXPECT_EQ(r.err, "tecido: " + (dir / "c.json").string() +
+                       ": /cloth/stiffness: unknown key \"stiffness\" (allowed: rows, cols, spacing, origin, axis_u, "
+                       "axis_v, total_mass, stiffness_b, stiffness_a, damping, elasticity, pins; did you mean \"stiffness_b\" "
+                       "or \"stiffness_a\"?); keys starting with '_' are comments\n");
+  std::filesystem::remove_all(dir);
+}
+
+// Without a plane or obstacle nothing can bounce the cloth: it needs no k. An obstacle with its
+// own elasticity decides its contacts alone: the cloth needs none either. Given, k is the cloth's.
+TEST(SceneReader, ClothNeedsElasticityOnlyWhereSomethingCanHitIt) {
+  const auto load = [](const std::string& text) { return io::scene_from_json(io::parse_json_text(text, "c.json"), "c.json"); };
+  EXPECT_EQ(load(std::string(kClothNoK) + "}").particles.size(), 9u);
+  EXPECT_EQ(load(std::string(kClothNoK) + R"(,"obstacles":[{"sphere":{"center":[0,0,-1],"radius":0.5},"elasticity":0.2}]})")
+                .particles.size(),
+            9u);
+  std::string with_k = kClothNoK;
+  with_k.replace(with_k.find("\"stiffness_b\":5"), 15, "\"stiffness_b\":5,\"elasticity\":0.25");
+  const Scene s = load(with_k + R"(,"planes":[{"position":[0,0,0],"normal":[0,0,1],"forward":[1,0,0],"half_extents":[1,1]}]})");
+  ASSERT_EQ(s.particles.size(), 9u);
+  for (double k : s.particles.elasticity) EXPECT_EQ(k, 0.25);
 }
 
 TEST(SceneReader, EveryBadSceneIsRejectedByTheReaderWithItsPath) {

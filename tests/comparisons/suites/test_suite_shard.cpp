@@ -4,6 +4,7 @@
 // Pareto front they decide come from the shards); inconsistent shards exit 2 with one line. Also the sweep runner's
 // independence from the thread count and the lossless JSON of doubles.
 #include "tests/support/cli_runner.h"
+#include "tests/support/command_line_mask.h"
 #include "comparisons/suites/random.h"
 #include "comparisons/io/input_error.h"
 #include "comparisons/suites/report.h"
@@ -28,22 +29,27 @@ using testing::run_cli;
 
 std::string q(const std::filesystem::path& p) { return "'" + p.string() + "'"; }
 
-/// report.json without its wall-clock fields: every "seconds" and "ns_per_pair" key.
-nlohmann::json mask_json(nlohmann::json j) {
+/// JSON without its wall-clock fields: every "seconds" and "ns_per_pair" key.
+nlohmann::json mask_timings(nlohmann::json j) {
   if (j.is_object()) {
     nlohmann::json out = nlohmann::json::object();
     for (auto it = j.begin(); it != j.end(); ++it)
-      if (it.key() != "seconds" && it.key() != "ns_per_pair") out[it.key()] = mask_json(it.value());
+      if (it.key() != "seconds" && it.key() != "ns_per_pair") out[it.key()] = mask_timings(it.value());
     return out;
   }
   if (j.is_array())
-    for (auto& v : j) v = mask_json(v);
+    for (auto& v : j) v = mask_timings(v);
   return j;
 }
 
-/// report.md without its wall-clock cells: the summary's time column and tritri's ns/pair column.
+/// report.json without its wall-clock fields (every "seconds" and "ns_per_pair" key), nor the
+/// command line that wrote it (the run's, the merge's).
+nlohmann::json mask_json(const nlohmann::json& j) { return mask_timings(testing::mask_command_line_json(j)); }
+
+/// report.md without its wall-clock cells (the summary's time column and tritri's ns/pair column)
+/// nor its command line.
 std::string mask_md(const std::string& md) {
-  std::istringstream in(md);
+  std::istringstream in(testing::mask_command_line_md(md));
   std::string line, out, section;
   const std::regex summary_time(R"(( \| )[0-9.]+( \|)$)");
   const std::regex ns_cell(R"(^(\| [a-z-]+ \| )[0-9]+( \|))");
@@ -206,11 +212,17 @@ TEST(SuiteShard, TradeoffMergeDoesNotDependOnTheSlicing) {
                     " --out " + q(dir / "m3"))
                 .code,
             0);
+  // Each merge records its own command line: masked in the reports.
+  const auto masked = [&](const std::filesystem::path& m, const std::string& f) {
+    const std::string text = testing::slurp(m / f);
+    if (f == "report.json") return testing::mask_command_line(text);
+    return f == "report.md" ? testing::mask_command_line_md(text) : text;
+  };
   for (const char* f : {"report.json", "report.md", "tradeoff/cloth16.dat", "tradeoff/cloth32.dat"}) {
-    const std::string want = testing::slurp(dir / "m2" / f);
+    const std::string want = masked(dir / "m2", f);
     ASSERT_FALSE(want.empty()) << f;
-    EXPECT_EQ(testing::slurp(dir / "m1" / f), want) << f;
-    EXPECT_EQ(testing::slurp(dir / "m3" / f), want) << f;
+    EXPECT_EQ(masked(dir / "m1", f), want) << f;
+    EXPECT_EQ(masked(dir / "m3", f), want) << f;
   }
   // The merged report uses the shards' measurements: every counted run has a cost.
   const auto got = nlohmann::json::parse(testing::slurp(dir / "m2" / "report.json"));

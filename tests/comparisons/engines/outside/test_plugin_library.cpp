@@ -6,6 +6,8 @@
 
 #include <gtest/gtest.h>
 
+#include <filesystem>
+
 namespace tecido::outside {
 namespace {
 
@@ -30,6 +32,18 @@ TEST(PluginLibrary, LoadsTheExampleTable) {
   EXPECT_NE(lib->table().engines[2].ccd_edge_edge, nullptr);
   EXPECT_EQ(lib->table().engines[2].tri_tri, nullptr);
   EXPECT_EQ(lib->door(), "plug-in " + testing::kExamplePlugin + " (ABI 1)");
+}
+
+// A report names a plug-in by its absolute path, however it was given (README: "the report names
+// it by its absolute path").
+TEST(PluginLibrary, ARelativePathIsNamedAbsolutely) {
+  const std::filesystem::path abs(testing::kExamplePlugin);
+  std::string rel = std::filesystem::relative(abs).string();  // against the working directory
+  if (rel.find('/') == std::string::npos) rel = "./" + rel;   // a bare name would be searched for
+  ASSERT_NE(rel, abs.string());
+  const auto lib = PluginLibrary::load(rel);
+  EXPECT_EQ(lib->path(), abs.lexically_normal().string());
+  EXPECT_EQ(lib->door(), "plug-in " + abs.lexically_normal().string() + " (ABI 1)");
 }
 
 TEST(PluginLibrary, MissingFileNamesThePathAndDlopen) {
