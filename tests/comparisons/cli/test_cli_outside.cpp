@@ -22,7 +22,7 @@ using testing::run_cli;
 
 std::string hand_pairs_file(const std::filesystem::path& dir) {
   std::vector<io::TriPair> pairs;
-  for (const auto& p : testing::hand_pairs()) pairs.push_back({p.id, p.a, p.b});
+  for (const auto& p : testing::hand_pairs()) pairs.push_back({p.id, p.a, p.b, {}});
   const std::string path = (dir / "pairs.json").string();
   testing::write_text(path, io::tri_pairs_to_json(pairs).dump());
   return path;
