@@ -42,11 +42,6 @@ std::string method_markdown(const Settings& s, std::uint64_t seed, const std::st
               "every group at its own bands.\n\n";
 }
 
-std::string no_referee_markdown() {
-  return "The exact referee is not built in (reference adapters off): no agreement measured, no agreement check "
-         "declared.\n\n";
-}
-
 namespace {
 std::string t_cell(const Tally& t) { return t.both_hit > 0 ? fmt::format("{:.2e}", t.max_t_error) : "–"; }
 }  // namespace

@@ -15,9 +15,6 @@ namespace tecido::suites::plane {
 /// Counts, block size, seed, referee, what each category claims and how groups are checked.
 std::string method_markdown(const Settings& s, std::uint64_t seed, const std::string& referee,
                             const std::vector<Category>& categories);
-/// The paragraph of a build without the exact referee.
-std::string no_referee_markdown();
-
 /// One row per engine and category: cases, agree, false hits, misses, no answer, both hit, max t
 /// error ("–" when no case where both hit), ns per case on the random row; the referee's hits per
 /// category above. A category whose cases failed shows "failed" and its reason below.

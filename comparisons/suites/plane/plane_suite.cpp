@@ -230,13 +230,10 @@ SuiteResult assemble(const Plan& plan, const std::string& out_dir, const std::ve
   CheckList checks = plan.checks;
   SuiteResult res;
   res.name = "plane";
-  std::string md;
-  if (plan.referee) {
-    md = method_markdown(plan.settings, plan.seed, kReferee, plan.categories) +
-         agreement_section(checks, plan, out_dir, results, res.data, res.stderr_lines);
-  } else {
-    md = no_referee_markdown();
-  }
+  // The registry always holds the exact referee (the reference engines are always built).
+  if (!plan.referee) throw std::logic_error("plane: the exact referee is not registered");
+  std::string md = method_markdown(plan.settings, plan.seed, kReferee, plan.categories) +
+                   agreement_section(checks, plan, out_dir, results, res.data, res.stderr_lines);
   md += contact_section(checks, plan, out_dir, results, res.data);
   md += drop_section(checks, plan, results, res.data);
   res.markdown = md + "\nWhat runs is set in `comparisons/suites/plane/settings.h`; the tolerance file holds the bands only.\n";
