@@ -23,6 +23,9 @@ constexpr int kMaxJsonDepth = 256;
 constexpr double kMaxCoordinate = 1e12;  ///< |position| components [m]
 constexpr double kMaxSpeed = 1e8;        ///< |velocity| components [m/s]
 constexpr double kMaxMass = 1e12;        ///< [kg]
+/// Smallest mass of a free particle or cloth node [kg]: its inverse, which the engine steps with,
+/// must be a finite double (1 / 1e-310 overflows; fuzz_scene: regress_subnormal_mass).
+constexpr double kMinMass = 1e-300;
 constexpr double kMaxDt = 10.0;          ///< [s]
 /// Steps of one run (the scene's "steps", `run --steps`); the work limit below usually binds first.
 constexpr long long kMaxSteps = 1000000000LL;

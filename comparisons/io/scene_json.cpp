@@ -86,6 +86,8 @@ ClothGridSpec read_cloth(const JsonReader& r, const Json& j, const std::string& 
   if (std::abs(c.axis_u.dot(c.axis_v)) > 1e-9) r.fail(child(w, "axis_v"), "axis_v must be orthogonal to axis_u");
   c.total_mass = r.number(r.require(j, w, "total_mass"), child(w, "total_mass"), kMaxMass);
   if (!(c.total_mass > 0.0)) r.fail(child(w, "total_mass"), "total mass must be > 0");
+  if (c.total_mass / (static_cast<double>(c.rows) * c.cols) < kMinMass)
+    r.fail(child(w, "total_mass"), "total mass too small: each node's mass must be at least 1e-300 kg (its inverse must be finite)");
   c.stiffness_b = r.number_in(r.require(j, w, "stiffness_b"), child(w, "stiffness_b"), 0.0, 1e12);
   if (j.contains("stiffness_a")) c.stiffness_a = r.number_in(j["stiffness_a"], child(w, "stiffness_a"), 0.0, 1e12);
   if (j.contains("damping")) c.damping = r.number_in(j["damping"], child(w, "damping"), 0.0, 1e12);
@@ -184,6 +186,7 @@ void read_particles(const JsonReader& r, const Json& ps, bool needs_k, Particles
     if (!pinned || p.contains("mass")) {
       mass = r.number(r.require(p, w, "mass"), child(w, "mass"), kMaxMass);
       if (!(mass > 0.0)) r.fail(child(w, "mass"), "mass must be > 0 (a free particle needs a positive mass)");
+      if (mass < kMinMass) r.fail(child(w, "mass"), "mass must be at least 1e-300 kg (its inverse must be finite)");
     }
     double k_el = 1.0;
     if (p.contains("elasticity")) {

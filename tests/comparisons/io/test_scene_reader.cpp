@@ -48,6 +48,8 @@ std::vector<BadScene> bad_scenes() {
       {"wrong_type_particles", replace(g, "\"particles\":[", "\"particles\":{\"a\":[") + "", "", "not valid JSON"},
       {"negative_mass", replace(g, "\"mass\":2.0", "\"mass\":-2.0"), "/particles/1/mass", "mass must be > 0"},
       {"zero_mass", replace(g, "\"mass\":2.0", "\"mass\":0"), "/particles/1/mass", "mass must be > 0"},
+      // 1 / 1e-310 overflows to inf (fuzz_scene: regress_subnormal_mass); 1e-300 is the smallest mass.
+      {"subnormal_mass", replace(g, "\"mass\":2.0", "\"mass\":1e-310"), "/particles/1/mass", "mass must be at least 1e-300 kg"},
       {"nan_literal", replace(g, "\"dt\":0.01", "\"dt\":NaN"), "", "not valid JSON"},
       {"inf_literal", replace(g, "\"dt\":0.01", "\"dt\":Infinity"), "", "not valid JSON"},
       {"huge_number", replace(g, "\"position\":[0,0,1]", "\"position\":[0,0,1e400]"), "/particles/0/position/2", "not finite"},
