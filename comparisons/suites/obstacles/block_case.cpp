@@ -34,14 +34,15 @@ io::Json block_case(const Settings& s, const std::string& data_dir, int n, bool 
   sim.set_log_contacts(true);
   const long long steps = run_steps(s, sc);
   io::Json frames = io::Json::array();
-  int max_through = 0, next_frame = 1;
+  int max_through = 0, end_through = 0, next_frame = 1;
   long long inside = 0;
-  double max_spring_depth = 0.0, max_particle_depth = 0.0;
+  double max_spring_depth = 0.0, max_particle_depth = 0.0, end_depth = 0.0;
   for (long long k = 1; k <= steps && sim.step(); ++k) {
     const auto& x = sim.particles().x;
     double deepest = 0.0;
     const int through = springs_through_box(x, springs, box, s.through_depth, &deepest);
     max_through = std::max(max_through, through);
+    end_through = through, end_depth = deepest;
     max_spring_depth = std::max(max_spring_depth, deepest);
     for (const Vec3& p : x) {
       const double d = point_box_depth(p, box);
@@ -53,6 +54,8 @@ io::Json block_case(const Settings& s, const std::string& data_dir, int n, bool 
     }
   }
   const double t_onset = sim.contact_log().empty() ? std::numeric_limits<double>::quiet_NaN() : sim.contact_log().front().time;
+  io::Json insets = io::Json::array();
+  for (double f : edge_insets(sc)) insets.push_back(num(f));
   return {{"frames", frames},
           {"max_through", max_through},
           {"max_spring_depth", num(max_spring_depth)},
@@ -61,6 +64,12 @@ io::Json block_case(const Settings& s, const std::string& data_dir, int n, bool 
           {"t_onset", num(t_onset)},
           {"rest_height", num(rest_height(sim.particles().x, box, up_of(sc)))},
           {"springs", springs.size()},
+          {"end_time", num(sim.time())},
+          {"end_through", end_through},
+          {"end_depth", num(end_depth)},
+          {"spacing", num(sc.cloth->spacing)},
+          {"insets", insets},
+          {"across", springs_across_outline(sc)},
           {"unstable", sim.instability() ? io::Json(sim.instability()->step) : io::Json(nullptr)}};
 }
 

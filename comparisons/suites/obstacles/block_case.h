@@ -13,7 +13,10 @@ namespace tecido::suites::obstacles {
 /// "max_spring_depth" (deepest at any step end), "steps_inside" (particle step ends strictly inside
 /// the block), "max_particle_depth", "t_onset" (first logged contact, "nan" if none),
 /// "rest_height" (mean height above the top at the end of the particles over the top face, within
-/// 1 mm below it or higher), "springs",
+/// 1 mm below it or higher), "springs", and at the run's end "end_time", "end_through" (springs
+/// through the block's interior), "end_depth" (the deepest of them [m], 0 when none), with the
+/// scene's "spacing" [m], "insets" (edge_insets: the block's four top edges against the grid, in
+/// spacings) and "across" (springs_across_outline),
 /// "unstable" (step or null)}.
 io::Json block_case(const Settings& s, const std::string& data_dir, int n, bool edge_contacts);
 

@@ -17,41 +17,40 @@ std::string cell(const io::Json* run, std::size_t f) {
   return fmt::format("{} ({:.2g} mm)", fr[1].dump(), 1e3 * get_num(fr[2]));
 }
 
-std::string direction_prose(const Settings& s, const Results& r) {
+std::string insets_text(const io::Json& run) {
+  std::string out;
+  for (const auto& f : run.at("insets")) out += fmt::format("{}{:.3g}", out.empty() ? "" : ", ", get_num(f));
+  return out;
+}
+
+/// The matched comparison (check_plan.h, record_matched) in words, from the two edges-off runs.
+std::string matched_prose(const Settings& s, const Results& r) {
   const io::Json* coarse = completed_case(r, block_name(s.block_sides[0], false));
   const io::Json* fine = completed_case(r, block_name(s.block_sides[1], false));
-  if (!coarse || !fine) return "The seed's direction cannot be stated: a run is missing.\n";
-  const Direction d = seed_direction(coarse->at("frames"), fine->at("frames"));
+  if (!coarse || !fine) return "The matched comparison cannot be stated: a run is missing.\n";
   const int nc = s.block_sides[0] * s.block_sides[0], nf = s.block_sides[1] * s.block_sides[1];
-  const std::string verdict = d.fewer > d.more ? "holds" : (d.fewer == d.more ? "is undecided" : "does not hold");
-  auto share = [](const io::Json& r) { return r.at("max_through").get<double>() / r.at("springs").get<double>(); };
-  const double dc = get_num(coarse->at("max_spring_depth")), df = get_num(fine->at("max_spring_depth"));
+  auto mm = [](const io::Json& run, const char* key) { return 1e3 * get_num(run.at(key)); };
+  auto per_s = [](const io::Json& run, const char* key) { return get_num(run.at(key)) / get_num(run.at("spacing")); };
+  const double dc = get_num(coarse->at("end_depth")), df = get_num(fine->at("end_depth"));
   return fmt::format(
-      "Edges off (the seed's engine): by the count, the seed's observation (less cutting with more particles) {}: the "
-      "{}-particle cloth has fewer springs through the block than the {}-particle one at {} of {} frames and more at "
-      "{} (most at once {} of {} springs against {} of {}). As a share of the springs, {:.1f}% against {:.1f}% "
-      "({}); the deepest spring goes {:.3g} mm in against {:.3g} mm ({}). With edge contacts on the table shows "
-      "what is left.\n",
-      verdict, nf, nc, d.fewer, d.frames, d.more, fine->at("max_through").dump(), fine->at("springs").dump(),
-      coarse->at("max_through").dump(), coarse->at("springs").dump(), 100 * share(*fine), 100 * share(*coarse),
-      share(*fine) < share(*coarse) ? "the finer cloth less" : "the finer cloth not less", 1e3 * df, 1e3 * dc,
-      df < dc ? "shallower with more particles, as the seed's figures show" : "not shallower with more particles");
+      "Edges off (the seed's engine). Placement: the block's four top edges lie {} spacings in from the nearest "
+      "particle column at {} particles (spacing {:.4g} mm) and {} at {} (spacing {:.4g} mm). At the run's end "
+      "(t = {:.3g} s) the deepest spring of the {}-particle cloth is {:.3g} mm inside the block ({:.3g} spacings), of "
+      "the {}-particle cloth {:.3g} mm ({:.3g} spacings): in metres the finer cloth sinks {} ({:.3g} times as deep); "
+      "{} of {} springs across the top face's outline pass through the block at {} particles, {} of {} at {}. "
+      "Deepest at any step (the landing included): {:.3g} mm ({:.3g} spacings) at {}, {:.3g} mm ({:.3g} spacings) at "
+      "{}. The raw count (the table) grows with the edge's springs, about as n, and the share of all springs falls "
+      "about as 1 / n: neither says anything by itself, so the checks compare depth per spacing and the share of the "
+      "springs across the edge.\n",
+      insets_text(*coarse), nc, mm(*coarse, "spacing"), insets_text(*fine), nf, mm(*fine, "spacing"),
+      get_num(fine->at("end_time")), nc, 1e3 * dc, per_s(*coarse, "end_depth"), nf, 1e3 * df,
+      per_s(*fine, "end_depth"), df < dc ? "less, as the seed's figures show" : "not less than the coarser one",
+      df / dc, coarse->at("end_through").dump(), coarse->at("across").dump(), nc, fine->at("end_through").dump(),
+      fine->at("across").dump(), nf, mm(*coarse, "max_spring_depth"), per_s(*coarse, "max_spring_depth"), nc,
+      mm(*fine, "max_spring_depth"), per_s(*fine, "max_spring_depth"), nf);
 }
 
 }  // namespace
-
-Direction seed_direction(const io::Json& coarse_frames, const io::Json& fine_frames) {
-  Direction d;
-  const std::size_t n = std::min(coarse_frames.size(), fine_frames.size());
-  for (std::size_t f = 0; f < n; ++f) {
-    const long long c = coarse_frames[f][1].get<long long>(), m = fine_frames[f][1].get<long long>();
-    if (c == 0 && m == 0) continue;  // nothing to compare (before landing)
-    ++d.frames;
-    d.fewer += m < c ? 1 : 0;
-    d.more += m > c ? 1 : 0;
-  }
-  return d;
-}
 
 std::string block_markdown(const Settings& s, const Results& r) {
   std::vector<const io::Json*> runs;
@@ -78,7 +77,7 @@ std::string block_markdown(const Settings& s, const Results& r) {
   for (const io::Json* run : runs) md += run ? fmt::format(" {} |", run->at("max_through").dump()) : " - |";
   md += "\n| particle step ends inside |";
   for (const io::Json* run : runs) md += run ? fmt::format(" {} |", run->at("steps_inside").dump()) : " - |";
-  return md + "\n\n" + direction_prose(s, r) + "\n";
+  return md + "\n\n" + matched_prose(s, r) + "\n";
 }
 
 std::string bullet_markdown(const Settings& s, const Results& r) {

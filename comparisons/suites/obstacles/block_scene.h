@@ -1,7 +1,7 @@
 #pragma once
 /// The scenes of the seed's cloth on a block (seed section 3.1.2, figs 10-13;
-/// data/scenes/seed_fig10_block.json with 121 particles, seed_fig12_block.json with 484, the
-/// choices the seed leaves open documented there) and of the cloth on a sphere
+/// data/scenes/seed_fig10_12_block_121.json with 121 particles, seed_fig11_13_block_484.json with
+/// 484, the choices the seed leaves open documented there) and of the cloth on a sphere
 /// (data/scenes/cloth_on_sphere.json), as the suite runs them, and what the suite measures on them
 /// relative to "up" (against gravity).
 #include "comparisons/suites/obstacles/box_interior.h"
@@ -36,6 +36,18 @@ Vec3 up_of(const Scene& scene);
 /// Height of x above the box's top face along `up` (the face whose outward normal is nearest
 /// `up`); `over` tells whether x lies within that face's outline.
 double height_above_top(const OrientedBox& box, const Vec3& up, const Vec3& x, bool* over);
+
+/// Where the block's four top edges fall against the cloth's grid at t = 0, in spacings: for each
+/// edge (the box's side faces along its two horizontal axes, + then -), the distance from the edge
+/// in to the nearest particle column on the top face's side, in [0, 1): 0 when a column lies on the
+/// edge, 0.5 midway between columns. Two scenes with equal insets place the block alike against
+/// their grids. Throws std::invalid_argument when the scene has no cloth or a horizontal axis of the
+/// box is not parallel to one of the grid's axes.
+std::array<double, 4> edge_insets(const Scene& scene);
+
+/// The springs (stiff_springs) with exactly one end over the block's top face's outline at t = 0
+/// (height_above_top's `over`): the springs that will cross the edge when the cloth drapes.
+int springs_across_outline(const Scene& scene);
 
 /// The smallest height of the cloth's particles above the obstacle's top at t = 0 (box: the top
 /// face; sphere: its highest point): the fall before the first contact of a flat cloth.

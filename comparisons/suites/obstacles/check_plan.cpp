@@ -4,6 +4,7 @@
 #include "comparisons/suites/obstacles/bullet_checks.h"
 #include "comparisons/suites/sweep.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace tecido::suites::obstacles {
@@ -48,10 +49,15 @@ void declare_block(CheckList& c, const Settings& s, const Tolerances& tol) {
         c.declare(b + "/max_springs_through", tol.at_most(p("springs_through_edge_contacts")),
                   "most springs through the block's interior at any step end, edge contacts on");
     }
-  c.declare("obstacles/block/seed_direction/share_ratio", tol.at_most(p("seed_share_ratio")),
-            "edges off: (most springs through / springs) of the finer cloth over the coarser one's");
-  c.declare("obstacles/block/seed_direction/depth_ratio", tol.at_most(p("seed_depth_ratio")),
-            "edges off: deepest spring through the block, finer cloth over coarser");
+  const std::string m = "obstacles/block/matched/";
+  c.declare(m + "inset_difference", tol.at_most(p("matched_inset_difference")),
+            "largest |inset at 121 - inset at 484| over the block's four top edges [spacings]: both scenes place the "
+            "block alike against their grids");
+  c.declare(m + "depth_per_spacing_ratio", tol.around(p("matched_depth_margin"), 1.0),
+            "edges off, at the run's end: deepest spring inside the block over the spacing, 484 particles over 121");
+  c.declare(m + "cut_share_ratio", tol.around(p("matched_cut_margin"), 1.0),
+            "edges off, at the run's end: springs through the block over springs across the top face's outline at "
+            "t = 0, 484 particles over 121");
 }
 
 void fail_all(CheckList& checks, const Case& c, const std::string& reason) {
@@ -93,17 +99,23 @@ CheckList declare_checks(const Settings& s, const Tolerances& tol, bool referenc
   return c;
 }
 
-void record_direction(CheckList& checks, const Settings& s, const io::Json& by_name) {
-  const std::string b = "obstacles/block/seed_direction/";
+void record_matched(CheckList& checks, const Settings& s, const io::Json& by_name) {
+  const std::string b = "obstacles/block/matched/";
   const io::Json& coarse = by_name.at(block_name(s.block_sides[0], false));
   const io::Json& fine = by_name.at(block_name(s.block_sides[1], false));
   for (const io::Json* r : {&coarse, &fine}) {
     if (const std::string* err = case_error(*r)) return checks.fail_pending(b, "a block run threw: " + *err);
     if (!r->at("unstable").is_null()) return checks.fail_pending(b, "a block run went unstable");
   }
-  auto share = [](const io::Json& r) { return r.at("max_through").get<double>() / r.at("springs").get<double>(); };
-  checks.set(b + "share_ratio", share(fine) / share(coarse));
-  checks.set(b + "depth_ratio", get_num(fine.at("max_spring_depth")) / get_num(coarse.at("max_spring_depth")));
+  double inset_difference = 0.0;
+  for (std::size_t e = 0; e < 4; ++e)
+    inset_difference =
+        std::max(inset_difference, std::abs(get_num(coarse.at("insets")[e]) - get_num(fine.at("insets")[e])));
+  checks.set(b + "inset_difference", inset_difference);
+  auto depth = [](const io::Json& r) { return get_num(r.at("end_depth")) / get_num(r.at("spacing")); };
+  auto share = [](const io::Json& r) { return r.at("end_through").get<double>() / r.at("across").get<double>(); };
+  checks.set(b + "depth_per_spacing_ratio", depth(fine) / depth(coarse));
+  checks.set(b + "cut_share_ratio", share(fine) / share(coarse));
 }
 
 void record(CheckList& checks, const Settings& s, const Case& c, const io::Json& result) {

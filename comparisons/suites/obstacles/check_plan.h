@@ -16,9 +16,12 @@ CheckList declare_checks(const Settings& s, const Tolerances& tol, bool referenc
 /// check of the case with the reason.
 void record(CheckList& checks, const Settings& s, const Case& c, const io::Json& result);
 
-/// The seed's direction (figs 10-13: less cutting with more particles), from the two edges-off
-/// block runs in `by_name` (case name -> result): share and depth ratios, finer over coarser; a
-/// missing or failed run fails both with the reason.
-void record_direction(CheckList& checks, const Settings& s, const io::Json& by_name);
+/// The block artefact at matched placement (figs 10-13), from the two edges-off block runs in
+/// `by_name` (case name -> result): how far the two scenes' edge insets differ, and, 484 particles
+/// over 121, the deepest spring inside the block at the run's end per spacing and the share of the
+/// springs across the top face's outline that pass through the block then. A missing, failed or
+/// unstable run fails all three with the reason; a run with nothing through gives a non-finite
+/// ratio, which fails.
+void record_matched(CheckList& checks, const Settings& s, const io::Json& by_name);
 
 }  // namespace tecido::suites::obstacles

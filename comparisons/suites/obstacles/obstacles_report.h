@@ -23,16 +23,10 @@ std::string analytic_markdown(const Settings& s, const Results& r);
 /// Fast particles and huge steps: step ends inside, tunnelling, guard corrections.
 std::string fast_markdown(const Settings& s, const Results& r);
 /// The seed's artefact table: springs through the block's interior per frame, both resolutions,
-/// edge contacts off and on, with the seed's direction stated as found.
+/// edge contacts off and on, then the matched comparison (placement, depth per spacing, share of
+/// the springs across the edge) in words.
 std::string block_markdown(const Settings& s, const Results& r);
 /// Core beside Bullet's classic soft body (reference build), with what Bullet does not model.
 std::string bullet_markdown(const Settings& s, const Results& r);
-
-/// For the edges-off runs: frames where the 484-particle cloth has fewer springs through the
-/// block than the 121-particle one, frames where it has more, frames compared (both present).
-struct Direction {
-  int fewer = 0, more = 0, frames = 0;
-};
-Direction seed_direction(const io::Json& coarse_frames, const io::Json& fine_frames);
 
 }  // namespace tecido::suites::obstacles

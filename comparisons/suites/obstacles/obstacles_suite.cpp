@@ -24,7 +24,7 @@ SuiteResult assemble(const Plan& plan, const std::vector<io::Json>& results) {
     obstacles::record(checks, plan.settings, plan.cases[k], results.at(k));
     by_name[plan.cases[k].name] = results.at(k);
   }
-  obstacles::record_direction(checks, plan.settings, by_name);
+  obstacles::record_matched(checks, plan.settings, by_name);
   SuiteResult res;
   res.name = "obstacles";
   const obstacles::Settings& s = plan.settings;
