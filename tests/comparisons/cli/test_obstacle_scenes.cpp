@@ -58,7 +58,7 @@ Simulation run_checked(const Scene& s, bool no_spring_through = false, long long
 }
 
 TEST(ObstacleScenes, BlockSceneAt121ParticlesRestsOnTheBlock) {
-  const Scene s = io::load_scene(scene_path("seed_fig10_block.json"));
+  const Scene s = io::load_scene(scene_path("seed_fig10_12_block_121.json"));
   ASSERT_EQ(s.particles.size(), 121u);
   ASSERT_FALSE(s.edge_contacts);
   const Simulation sim = run_checked(s);
@@ -68,14 +68,14 @@ TEST(ObstacleScenes, BlockSceneAt121ParticlesRestsOnTheBlock) {
 }
 
 TEST(ObstacleScenes, BlockSceneAt484ParticlesRestsOnTheBlock) {
-  const Scene s = io::load_scene(scene_path("seed_fig12_block.json"));
+  const Scene s = io::load_scene(scene_path("seed_fig11_13_block_484.json"));
   ASSERT_EQ(s.particles.size(), 484u);
   const Simulation sim = run_checked(s);
   EXPECT_GT(sim.obstacle_contacts().counters().contacts, 0);
 }
 
 TEST(ObstacleScenes, BlockSceneWithEdgeContactsKeepsEverySpringOut) {
-  Scene s = io::load_scene(scene_path("seed_fig10_block.json"));
+  Scene s = io::load_scene(scene_path("seed_fig10_12_block_121.json"));
   s.edge_contacts = true;
   const Simulation sim = run_checked(s, /*no_spring_through=*/true);
   EXPECT_GT(sim.spring_box_contacts().counters().contacts, 0);
@@ -153,7 +153,7 @@ TEST(ObstacleScenes, BlockAsAnObjMeshRestsTheClothOnItsTopAndKeepsItOut) {
   testing::write_text(dir / "block.obj", "v -0.25 0.25 -0.25\nv 0.25 0.25 -0.25\nv 0.25 0.75 -0.25\nv -0.25 0.75 -0.25\n"
                                          "v -0.25 0.25 0.25\nv 0.25 0.25 0.25\nv 0.25 0.75 0.25\nv -0.25 0.75 0.25\n"
                                          "f 1 4 3 2\nf 5 6 7 8\nf 1 5 8 4\nf 2 3 7 6\nf 1 2 6 5\nf 4 8 7 3\n");
-  nlohmann::json scene = nlohmann::json::parse(testing::slurp(scene_path("seed_fig10_block.json")));
+  nlohmann::json scene = nlohmann::json::parse(testing::slurp(scene_path("seed_fig10_12_block_121.json")));
   scene["obstacles"] = nlohmann::json::parse(R"([{"mesh":{"obj":"block.obj"},"friction":0.5,"elasticity":0.1}])");
   testing::write_text(dir / "block.json", scene.dump());
   const Scene s = io::load_scene((dir / "block.json").string());
@@ -175,7 +175,7 @@ TEST(ObstacleScenes, RunResultCountsEdgeContactsWhenOn) {
   // The 121-particle block with edge_contacts on, 0.5 s (it lands at about 0.23 s): the result
   // carries the spring-box counters, with contacts and nothing left unresolved.
   const auto dir = testing::temp_dir("edgecounters");
-  std::string text = testing::slurp(scene_path("seed_fig10_block.json"));
+  std::string text = testing::slurp(scene_path("seed_fig10_12_block_121.json"));
   const auto pos = text.find("\"edge_contacts\": false");
   ASSERT_NE(pos, std::string::npos);
   text.replace(pos, 22, "\"edge_contacts\": true");
@@ -186,7 +186,7 @@ TEST(ObstacleScenes, RunResultCountsEdgeContactsWhenOn) {
   ASSERT_TRUE(j.contains("edge_contacts")) << r.out.substr(0, 200);
   EXPECT_GT(j["edge_contacts"]["spring_box"]["contacts"].get<long long>(), 0);
   EXPECT_EQ(j["edge_contacts"]["spring_box"]["unresolved"].get<long long>(), 0);
-  const auto off = testing::run_cli("run '" + scene_path("seed_fig10_block.json") + "' --json --steps 10");
+  const auto off = testing::run_cli("run '" + scene_path("seed_fig10_12_block_121.json") + "' --json --steps 10");
   ASSERT_EQ(off.code, 0) << off.err;
   EXPECT_FALSE(nlohmann::json::parse(off.out).contains("edge_contacts"));
   std::filesystem::remove_all(dir);

@@ -2,7 +2,6 @@
 // values or on the tolerance file's numbers), tightening a band flips a check, a case that threw or
 // a value never produced fails with its reason.
 #include "comparisons/suites/obstacles/check_plan.h"
-#include "comparisons/suites/obstacles/obstacles_report.h"
 #include "comparisons/suites/sweep.h"
 
 #include <gtest/gtest.h>
@@ -51,9 +50,9 @@ TEST(ObstaclesCheckPlan, TheCheckSetDependsOnTheSettingsOnly) {
   EXPECT_EQ(base, names(declare_checks(s, scaled(0.0), true)));
   EXPECT_EQ(base, names(declare_checks(settings(true), file_tolerances(), true)));
   // 2 sphere drop + 2 slide + 4 rest + 20 fast + 5 thin-box tunnelling + 4 block inside + 2 edges-on
-  // + 2 seed direction, and 3 Bullet onsets in the reference build.
-  EXPECT_EQ(base.size(), 41u + 3u);
-  EXPECT_EQ(names(declare_checks(s, file_tolerances(), false)).size(), 41u);
+  // + 3 matched block comparison, and 3 Bullet onsets in the reference build.
+  EXPECT_EQ(base.size(), 42u + 3u);
+  EXPECT_EQ(names(declare_checks(s, file_tolerances(), false)).size(), 42u);
 }
 
 TEST(ObstaclesCheckPlan, EveryDeclaredCheckWithoutAValueFailsNotProduced) {
@@ -92,35 +91,70 @@ TEST(ObstaclesCheckPlan, ACaseThatThrewOrWentUnstableFailsItsOwnChecksWithTheRea
   EXPECT_EQ(find(done, "obstacles/fast/thin-box/h=1/steps_inside").reason, "not produced");
 }
 
-TEST(ObstaclesCheckPlan, TheSeedsDirectionComesFromBothEdgesOffRuns) {
-  const Settings s = settings(true);
-  auto run = [](int through, int springs, double depth) {
-    return io::Json{{"max_through", through}, {"springs", springs}, {"max_spring_depth", num(depth)}, {"unstable", nullptr}};
-  };
-  io::Json by_name;
-  by_name[block_name(s.block_sides[0], false)] = run(100, 400, 0.04);
-  by_name[block_name(s.block_sides[1], false)] = run(150, 1800, 0.01);
-  CheckList checks = declare_checks(s, file_tolerances(), false);
-  record_direction(checks, s, by_name);
-  const auto done = checks.finish();
-  // (150 / 1800) / (100 / 400) = 1/3; 0.01 / 0.04 = 1/4.
-  EXPECT_NEAR(find(done, "obstacles/block/seed_direction/share_ratio").value, 1.0 / 3.0, 1e-15);
-  EXPECT_NEAR(find(done, "obstacles/block/seed_direction/depth_ratio").value, 0.25, 1e-15);
-  by_name[block_name(s.block_sides[1], false)] = io::Json{{"error", "no cloth"}};
-  CheckList failed = declare_checks(s, file_tolerances(), false);
-  record_direction(failed, s, by_name);
-  EXPECT_NE(find(failed.finish(), "obstacles/block/seed_direction/depth_ratio").reason.find("no cloth"),
-            std::string::npos);
+/// An edges-off block run's result as record_matched reads it: all four insets `inset`.
+io::Json block_run(double spacing, double inset, double end_depth, int end_through, int across) {
+  return io::Json{{"spacing", num(spacing)},   {"insets", {num(inset), num(inset), num(inset), num(inset)}},
+                  {"end_depth", num(end_depth)}, {"end_through", end_through},
+                  {"across", across},           {"unstable", nullptr}};
 }
 
-TEST(ObstaclesReport, SeedDirectionComparesFramesWhereEitherClothCutsTheBlock) {
-  // Frames [t, count, depth]: both zero (skipped), fewer, more, equal.
-  const io::Json coarse = io::Json::array({{0.1, 0, 0.0}, {0.2, 10, 0.0}, {0.3, 4, 0.0}, {0.4, 5, 0.0}});
-  const io::Json fine = io::Json::array({{0.1, 0, 0.0}, {0.2, 3, 0.0}, {0.3, 9, 0.0}, {0.4, 5, 0.0}});
-  const Direction d = seed_direction(coarse, fine);
-  EXPECT_EQ(d.frames, 3);
-  EXPECT_EQ(d.fewer, 1);
-  EXPECT_EQ(d.more, 1);
+/// record_matched on the two runs, the three checks by name.
+std::vector<Check> matched(const io::Json& coarse, const io::Json& fine) {
+  const Settings s = settings(true);
+  io::Json by_name;
+  by_name[block_name(s.block_sides[0], false)] = coarse;
+  by_name[block_name(s.block_sides[1], false)] = fine;
+  CheckList checks = declare_checks(s, file_tolerances(), false);
+  record_matched(checks, s, by_name);
+  std::vector<Check> out;
+  for (const char* k : {"inset_difference", "depth_per_spacing_ratio", "cut_share_ratio"})
+    out.push_back(find(checks.finish(), std::string("obstacles/block/matched/") + k));
+  return out;
+}
+
+TEST(ObstaclesCheckPlan, MatchedBlockChecksOnWorkedCases) {
+  // 121 particles at spacing 0.1 sink 30 mm (0.3 spacings), 100 of 160 springs across the outline
+  // cut; 484 at 0.05 sink 15 mm (0.3 spacings), 200 of 340 cut: (0.3 / 0.3) = 1 and
+  // (200 / 340) / (100 / 160) = 0.941..., both within the file's 25% of 1.
+  const io::Json coarse = block_run(0.1, 0.5, 0.03, 100, 160);
+  auto ok = matched(coarse, block_run(0.05, 0.5, 0.015, 200, 340));
+  EXPECT_TRUE(ok[0].pass);
+  EXPECT_EQ(ok[0].value, 0.0);
+  EXPECT_TRUE(ok[1].pass);
+  EXPECT_NEAR(ok[1].value, 1.0, 1e-12);
+  EXPECT_TRUE(ok[2].pass);
+  EXPECT_NEAR(ok[2].value, (200.0 / 340.0) / (100.0 / 160.0), 1e-12);
+  // The finer cloth 10 mm deep: shallower in metres (the old "depth ratio at most 1" held, 1/3),
+  // but 0.2 spacings against 0.3, 0.667: more than spacing explains, the check fails.
+  auto shallow = matched(coarse, block_run(0.05, 0.5, 0.010, 200, 340));
+  EXPECT_FALSE(shallow[1].pass);
+  EXPECT_NEAR(shallow[1].value, 2.0 / 3.0, 1e-12);
+  // 20 mm: 0.4 spacings, 1.333: relatively deeper, fails the other way; so does a share that falls.
+  auto deep = matched(coarse, block_run(0.05, 0.5, 0.020, 100, 340));
+  EXPECT_FALSE(deep[1].pass);
+  EXPECT_NEAR(deep[1].value, 4.0 / 3.0, 1e-12);
+  EXPECT_FALSE(deep[2].pass);
+  EXPECT_NEAR(deep[2].value, (100.0 / 340.0) / (100.0 / 160.0), 1e-12);
+  // The old scenes' placement (0.5 against 0.75 spacings): the comparison's premise fails.
+  auto placed = matched(coarse, block_run(0.05, 0.75, 0.015, 200, 340));
+  EXPECT_FALSE(placed[0].pass);
+  EXPECT_NEAR(placed[0].value, 0.25, 1e-15);
+}
+
+TEST(ObstaclesCheckPlan, MatchedBlockChecksFailWithAReasonOnBadRuns) {
+  const io::Json fine = block_run(0.05, 0.5, 0.015, 200, 340);
+  // Nothing through the coarser cloth: the ratios are not finite, and fail.
+  auto none = matched(block_run(0.1, 0.5, 0.0, 0, 160), fine);
+  EXPECT_FALSE(none[1].pass);
+  EXPECT_FALSE(none[2].pass);
+  EXPECT_FALSE(none[1].reason.empty());
+  for (const io::Json& bad : {io::Json{{"error", "no cloth"}}, io::Json{{"unstable", 12}}}) {
+    auto failed = matched(block_run(0.1, 0.5, 0.03, 100, 160), bad);
+    for (const Check& c : failed) {
+      EXPECT_FALSE(c.pass) << c.name;
+      EXPECT_NE(c.reason.find(bad.contains("error") ? "no cloth" : "unstable"), std::string::npos) << c.reason;
+    }
+  }
 }
 
 }  // namespace tecido::suites::obstacles
