@@ -37,7 +37,8 @@ std::string matched_prose(const Settings& s, const Results& r) {
       "particle column at {} particles (spacing {:.4g} mm) and {} at {} (spacing {:.4g} mm). At the run's end "
       "(t = {:.3g} s) the deepest spring of the {}-particle cloth is {:.3g} mm inside the block ({:.3g} spacings), of "
       "the {}-particle cloth {:.3g} mm ({:.3g} spacings): in metres the finer cloth sinks {} ({:.3g} times as deep); "
-      "{} of {} springs across the top face's outline pass through the block at {} particles, {} of {} at {}. "
+      "{} springs pass through the block at {} particles ({} springs crossed the top face's outline at t = 0; "
+      "springs beside the block's corners cut it too), {} at {} ({} across). "
       "Deepest at any step (the landing included): {:.3g} mm ({:.3g} spacings) at {}, {:.3g} mm ({:.3g} spacings) at "
       "{}. The raw count (the table) grows with the edge's springs, about as n, and the share of all springs falls "
       "about as 1 / n: neither says anything by itself, so the checks compare depth per spacing and the share of the "
@@ -45,8 +46,8 @@ std::string matched_prose(const Settings& s, const Results& r) {
       insets_text(*coarse), nc, mm(*coarse, "spacing"), insets_text(*fine), nf, mm(*fine, "spacing"),
       get_num(fine->at("end_time")), nc, 1e3 * dc, per_s(*coarse, "end_depth"), nf, 1e3 * df,
       per_s(*fine, "end_depth"), df < dc ? "less, as the seed's figures show" : "not less than the coarser one",
-      df / dc, coarse->at("end_through").dump(), coarse->at("across").dump(), nc, fine->at("end_through").dump(),
-      fine->at("across").dump(), nf, mm(*coarse, "max_spring_depth"), per_s(*coarse, "max_spring_depth"), nc,
+      df / dc, coarse->at("end_through").dump(), nc, coarse->at("across").dump(), fine->at("end_through").dump(), nf,
+      fine->at("across").dump(), mm(*coarse, "max_spring_depth"), per_s(*coarse, "max_spring_depth"), nc,
       mm(*fine, "max_spring_depth"), per_s(*fine, "max_spring_depth"), nf);
 }
 

@@ -41,7 +41,7 @@ struct Settings {
   // The seed's block (figs 10-13) and the cloth on a sphere: the scenes a user runs, from
   // data/scenes (their choices are documented beside them); the suite only picks the duration.
   std::array<int, 2> block_sides = {11, 22};  ///< 121 and 484 particles
-  std::array<const char*, 2> block_files = {"seed_fig10_block.json", "seed_fig12_block.json"};
+  std::array<const char*, 2> block_files = {"seed_fig10_12_block_121.json", "seed_fig11_13_block_484.json"};
   const char* sphere_file = "cloth_on_sphere.json";
   double block_seconds = 0.0;  ///< 0: each scene's own steps x dt (3 s); 0.6 s with --quick
   int block_frames = 30;       ///< frames counted (equal intervals over the run)
