@@ -158,6 +158,8 @@ py::list engine_names(const std::string& question) {
 }  // namespace
 
 PYBIND11_MODULE(tecido, m) {
+  py::options options;
+  options.disable_function_signatures();  // each docstring's first line is the signature, in Python's words
   m.doc() = kModuleDoc;
   m.attr("__version__") = io::tecido_version();
   m.attr("commit") = io::tecido_commit();

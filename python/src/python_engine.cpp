@@ -33,7 +33,7 @@ std::string type_of(py::handle v) { return py::str(py::type::handle_of(v).attr("
 io::Json scalar_json(py::handle v) {
   if (v.is_none()) return nullptr;
   if (is_bool(v)) return v.cast<bool>();
-  if (is_number(v)) return py::float_(v).cast<double>();
+  if (is_number(v)) return py::float_(py::reinterpret_borrow<py::object>(v)).cast<double>();
   throw outside::ProtocolError("a value of type " + type_of(v) + " where a boolean, a number or None belongs");
 }
 

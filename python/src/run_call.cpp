@@ -51,6 +51,9 @@ Scene prepared_scene(const RunArgs& a) {
     scene.integrator = *kind;
   }
   if (!a.dt.is_none()) {
+    if (!(PyFloat_Check(a.dt.ptr()) || PyLong_Check(a.dt.ptr())) || PyBool_Check(a.dt.ptr()))
+      throw io::UsageError("dt: expected a number of seconds, got " +
+                           std::string(py::str(py::type::handle_of(a.dt).attr("__name__"))));
     const double dt = py::float_(a.dt).cast<double>();
     if (!(dt > 0.0 && dt <= io::kMaxDt))
       throw io::UsageError("dt: " + std::to_string(dt) + " is outside (0, " + std::to_string(io::kMaxDt) + "]");
