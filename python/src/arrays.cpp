@@ -34,42 +34,38 @@ void check_shape(const py::array& a, const std::string& name, const std::vector<
   if (!ok) throw io::UsageError(name + ": expected an array of shape " + expected + ", got shape " + shape_text(a));
 }
 
-std::string pointer(std::size_t i, std::size_t j, std::size_t c, bool blocks) {
-  return "/" + std::to_string(i) + (blocks ? "/" + std::to_string(j) : "") + "/" + std::to_string(c);
-}
-
-[[noreturn]] void bad_coordinate(const std::string& name, const std::string& where, double x, double max_abs) {
-  std::ostringstream s;
-  if (!std::isfinite(x)) s << "number is not finite (" << x << ")";
-  else s << "number " << x << " is out of range (|x| <= " << max_abs << ")";
-  throw io::InputError(name, where, s.str());
-}
-
 }  // namespace
 
-std::vector<Vec3> point_array(py::handle value, const std::string& name, std::size_t rows, double max_abs) {
-  const py::array a = as_array(value, name);
-  const bool blocks = rows > 0;
-  const std::string expected = blocks ? "(N, " + std::to_string(rows) + ", 3)" : "(N, 3)";
-  check_shape(a, name, blocks ? std::vector<py::ssize_t>{static_cast<py::ssize_t>(rows), 3} : std::vector<py::ssize_t>{3},
+PointBlocks::PointBlocks(py::handle value, const std::string& name, std::size_t rows, double max_abs)
+    : array_(as_array(value, name)), name_(name), blocks_(rows > 0), max_abs_(max_abs) {
+  const std::string expected = blocks_ ? "(N, " + std::to_string(rows) + ", 3)" : "(N, 3)";
+  check_shape(array_, name, blocks_ ? std::vector<py::ssize_t>{static_cast<py::ssize_t>(rows), 3} : std::vector<py::ssize_t>{3},
               expected);
-  if (!py::isinstance<py::array_t<double, 0>>(a))
-    throw io::UsageError(name + ": dtype " + dtype_text(a) + ", expected float64 (tecido converts no dtype: pass " +
+  if (!py::isinstance<py::array_t<double, 0>>(array_))
+    throw io::UsageError(name + ": dtype " + dtype_text(array_) + ", expected float64 (tecido converts no dtype: pass " +
                          "numpy.asarray(" + name + ", dtype=numpy.float64))");
-  const std::size_t n = static_cast<std::size_t>(a.shape(0)), r = blocks ? rows : 1;
-  const char* base = static_cast<const char*>(a.data());
-  const py::ssize_t s0 = a.strides(0), s1 = blocks ? a.strides(1) : 0, s2 = a.strides(blocks ? 2 : 1);
-  std::vector<Vec3> out(n * r);
-  for (std::size_t i = 0; i < n; ++i)
-    for (std::size_t j = 0; j < r; ++j) {
-      const char* p = base + static_cast<py::ssize_t>(i) * s0 + static_cast<py::ssize_t>(j) * s1;
-      Vec3& v = out[i * r + j];
-      for (std::size_t c = 0; c < 3; ++c) {
-        const double x = *reinterpret_cast<const double*>(p + static_cast<py::ssize_t>(c) * s2);
-        if (!(std::abs(x) <= max_abs)) bad_coordinate(name, pointer(i, j, c, blocks), x, max_abs);
-        v[static_cast<Eigen::Index>(c)] = x;
-      }
-    }
+  n_ = static_cast<std::size_t>(array_.shape(0));
+  base_ = static_cast<const char*>(array_.data());
+  s0_ = array_.strides(0);
+  s1_ = blocks_ ? array_.strides(1) : 0;
+  s2_ = array_.strides(blocks_ ? 2 : 1);
+}
+
+void PointBlocks::bad_coordinate(std::size_t i, std::size_t j, std::size_t c, double x) const {
+  std::ostringstream s;
+  if (!std::isfinite(x)) s << "number is not finite (" << x << ")";
+  else s << "number " << x << " is out of range (|x| <= " << max_abs_ << ")";
+  const std::string where = "/" + std::to_string(i) + (blocks_ ? "/" + std::to_string(j) : "") + "/" + std::to_string(c);
+  throw io::InputError(name_, where, s.str());
+}
+
+std::vector<Vec3> point_array(py::handle value, const std::string& name, std::size_t rows, double max_abs) {
+  const PointBlocks a(value, name, rows, max_abs);
+  const std::size_t r = rows ? rows : 1;
+  std::vector<Vec3> out;
+  out.reserve(a.size() * r);
+  for (std::size_t i = 0; i < a.size(); ++i)
+    for (std::size_t j = 0; j < r; ++j) out.push_back(a.point(i, j));
   return out;
 }
 

@@ -11,6 +11,7 @@
 #include <pybind11/pybind11.h>
 
 #include <array>
+#include <cmath>
 #include <cstddef>
 #include <string>
 #include <vector>
@@ -18,6 +19,37 @@
 namespace tecido::python {
 
 namespace py = pybind11;
+
+/// A float64 array of N blocks of `rows` points, shape and dtype checked, read in place: point(i, j)
+/// checks the coordinates as it reads them. Holds a reference to the array, so it may be read
+/// with the GIL released.
+class PointBlocks {
+ public:
+  /// Shape (N, rows, 3), or (N, 3) when rows is 0; io::UsageError for another shape or dtype.
+  PointBlocks(py::handle value, const std::string& name, std::size_t rows, double max_abs);
+  std::size_t size() const { return n_; }
+  /// Point j of block i; io::InputError(name, "/i/j/c", ...) for a non-finite or out-of-range coordinate.
+  Vec3 point(std::size_t i, std::size_t j) const {
+    const char* p = base_ + static_cast<py::ssize_t>(i) * s0_ + static_cast<py::ssize_t>(j) * s1_;
+    Vec3 v;
+    for (std::size_t c = 0; c < 3; ++c) {
+      const double x = *reinterpret_cast<const double*>(p + static_cast<py::ssize_t>(c) * s2_);
+      if (!(std::abs(x) <= max_abs_)) bad_coordinate(i, j, c, x);
+      v[static_cast<Eigen::Index>(c)] = x;
+    }
+    return v;
+  }
+
+ private:
+  [[noreturn]] void bad_coordinate(std::size_t i, std::size_t j, std::size_t c, double x) const;
+  py::array array_;
+  std::string name_;
+  bool blocks_;
+  double max_abs_;
+  std::size_t n_ = 0;
+  const char* base_ = nullptr;
+  py::ssize_t s0_ = 0, s1_ = 0, s2_ = 0;
+};
 
 /// `value` as N blocks of `rows` points, row-major (N * rows points): shape (N, rows, 3), or
 /// (N, 3) when rows is 0 (N points). |coordinate| <= max_abs. `name` names the argument.

@@ -26,6 +26,11 @@ void check_same_count(std::size_t n, std::size_t m, const std::string& first, co
     throw io::UsageError(second + ": " + std::to_string(m) + " queries, but " + first + " has " + std::to_string(n));
 }
 
+[[noreturn]] void no_answer(const std::string& engine, std::size_t query) {
+  throw io::UsageError("engine " + engine + " gives no answer to query " + std::to_string(query) +
+                       " (pass answered=True for a mask of the answered queries)");
+}
+
 /// The answers as arrays: hits, the value of each hit (`value`), and which were answered. Without
 /// `answered`, an unanswered query is a ValueError naming the engine and the query.
 template <class Answer, class Hit, class Value>
@@ -39,9 +44,7 @@ py::object answer_arrays(const std::vector<std::optional<Answer>>& answers, cons
   double* v = values.mutable_data();
   for (py::ssize_t i = 0; i < n; ++i) {
     const auto& a = answers[static_cast<std::size_t>(i)];
-    if (!a && !answered)
-      throw io::UsageError("engine " + engine + " gives no answer to query " + std::to_string(i) +
-                           " (pass answered=True for a mask of the answered queries)");
+    if (!a && !answered) no_answer(engine, static_cast<std::size_t>(i));
     k[i] = a.has_value();
     h[i] = a && hit_of(*a);
     v[i] = a && hit_of(*a) ? value_of(*a) : std::numeric_limits<double>::quiet_NaN();
@@ -72,13 +75,39 @@ std::vector<std::string> builtin_tri_tri() { return tri_tri_engine_names(nullptr
 
 py::object tri_tri_call(py::handle a, py::handle b, py::handle engine, bool answered) {
   const EngineChoice e = choose_engine(engine, builtin_tri_tri(), "tri-tri", &outside::Capabilities::tri_tri);
-  const std::vector<outside::TriTriQuery> queries = tri_tri_queries(a, b);
-  std::vector<std::optional<bool>> answers;
+  const TriTriEngine* builtin = find_tri_tri_engine(e.name);
+  if (!builtin) {  // a Python engine: the batch through its door (run_engines.h)
+    const std::vector<outside::TriTriQuery> queries = tri_tri_queries(a, b);
+    std::vector<std::optional<bool>> answers;
+    {
+      py::gil_scoped_release release;
+      answers = tri_tri_answers(e.name, queries, e.outside.get());
+    }
+    return answer_arrays(answers, e.name, answered, [](bool h) { return h; }, [](bool) { return 0.0; }, false);
+  }
+  // A built-in engine: its test on the arrays as they are read, straight into the result, with no
+  // copy of the input (what tri_tri_answers does for a batch, without the batch: per pair, the
+  // cost of the call is then the reading and checking of 18 numbers).
+  const PointBlocks pa(a, "a", 3, kMaxTriTriCoordinate), pb(b, "b", 3, kMaxTriTriCoordinate);
+  check_same_count(pa.size(), pb.size(), "a", "b");
+  const auto n = static_cast<py::ssize_t>(pa.size());
+  py::array_t<bool> hits(n), known(n);
+  bool* h = hits.mutable_data();
+  bool* k = known.mutable_data();
   {
     py::gil_scoped_release release;
-    answers = tri_tri_answers(e.name, queries, e.outside.get());
+    for (py::ssize_t i = 0; i < n; ++i) {
+      const auto u = static_cast<std::size_t>(i);
+      const Triangle ta = {pa.point(u, 0), pa.point(u, 1), pa.point(u, 2)};
+      const Triangle tb = {pb.point(u, 0), pb.point(u, 1), pb.point(u, 2)};
+      const std::optional<bool> r = builtin->test(ta, tb);
+      h[i] = r.value_or(false);
+      k[i] = r.has_value();
+    }
   }
-  return answer_arrays(answers, e.name, answered, [](bool h) { return h; }, [](bool) { return 0.0; }, false);
+  for (py::ssize_t i = 0; i < n && !answered; ++i)
+    if (!k[i]) no_answer(e.name, static_cast<std::size_t>(i));
+  return answered ? py::object(py::make_tuple(hits, known)) : py::object(hits);
 }
 
 py::object ccd_call(py::handle t0, py::handle t1, const std::string& kind, py::handle engine, bool answered) {
