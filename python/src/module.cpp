@@ -155,6 +155,18 @@ py::list engine_names(const std::string& question) {
   return py::cast(names);
 }
 
+/// The reports' "command_line" (io/provenance.h): the Python process that wrote them,
+/// sys.executable and sys.argv.
+void record_command_line() {
+  const py::module_ sys = py::module_::import("sys");
+  std::vector<std::string> args = {py::str(sys.attr("executable"))};
+  if (py::hasattr(sys, "argv"))
+    for (const py::handle a : sys.attr("argv")) args.push_back(py::str(a));
+  std::vector<const char*> argv;
+  for (const auto& a : args) argv.push_back(a.c_str());
+  io::set_command_line(static_cast<int>(argv.size()), argv.data());
+}
+
 }  // namespace
 
 PYBIND11_MODULE(tecido, m) {
@@ -164,6 +176,7 @@ PYBIND11_MODULE(tecido, m) {
   m.attr("__version__") = io::tecido_version();
   m.attr("commit") = io::tecido_commit();
   register_errors(m);
+  record_command_line();
   m.def("tri_tri", &tri_tri_call, kTriTriDoc, py::arg("a"), py::arg("b"), py::arg("engine") = "core", py::kw_only(),
         py::arg("answered") = false);
   m.def("ccd", &ccd_call, kCcdDoc, py::arg("t0"), py::arg("t1"), py::arg("kind"), py::arg("engine") = "core",

@@ -66,6 +66,15 @@ def test_an_exception_names_the_engine_and_the_query():
     assert isinstance(e.value, RuntimeError)
 
 
+def test_an_exception_inside_a_suite_reaches_the_caller():
+    """Raised on a suite's worker thread, it crosses the C++ sweep and comes back with its cause."""
+    with pytest.raises(tecido.EngineError) as e:
+        tecido.suite("tritri", engines=[Raises()], quick=True, threads=2)
+    assert str(e.value).startswith("engine boom (Python object ")
+    assert "ZeroDivisionError: my bug" in str(e.value)
+    assert isinstance(e.value.__cause__, ZeroDivisionError)
+
+
 class Liar:
     name = "liar"
 
