@@ -109,22 +109,6 @@ std::string run_with_frames(Simulation& sim, const Scene& scene, const RunOption
   return plotted ? "" : note;
 }
 
-io::Json self_collision_json(const SelfCollisionResponder& r) {
-  const SelfCollisionStats& st = r.stats();
-  return {{"response", self_collision_response_name(r.settings().response)},
-          {"checks", st.checks},
-          {"contact_checks", st.contact_checks},
-          {"share", st.checks ? static_cast<double>(st.contact_checks) / st.checks : 0.0},
-          {"pairs", st.pairs},
-          {"max_pairs", st.max_pairs},
-          {"pairs_now", st.last_pairs},
-          {"gia_regions", st.gia_regions},
-          {"gia_failed_checks", st.gia_failed_checks},
-          {"gia_unresolved_pairs", st.gia_unresolved_pairs},
-          {"unseparated_cut_edges", st.unseparated_cut_edges},
-          {"pushed_particles", st.pushed_particles}};
-}
-
 void print_summary(const Simulation& sim, const Scene& scene, const io::Json& result, const SelfCollisionResponder* sc,
                    const io::FrameWriter* frames, const RunOptions& o, const std::string& plot_note) {
   std::cout << "status " << result["status"].get<std::string>() << ", " << sim.steps_done() << " steps, t = "
@@ -172,7 +156,7 @@ int run(const RunOptions& o) {
     plot_note = run_with_frames(sim, scene, o, every, *frames);
   }
   io::Json result = io::run_result_json(sim);
-  if (self_collision) result["self_collision"] = self_collision_json(*self_collision);
+  if (self_collision) result["self_collision"] = io::self_collision_json(*self_collision);
   if (!o.out.empty()) {
     // The file outlives the command: it names what made it. stdout is the command's own answer.
     io::Json file = result;

@@ -23,17 +23,6 @@ namespace tecido::cli {
 
 namespace {
 
-/// The engines whose cost is every pair of triangles.
-bool tests_every_pair(const std::string& engine) { return engine == "core-brute" || engine == "exact"; }
-
-void check_brute_force_size(const std::vector<std::string>& names, const io::ObjMesh& mesh, const std::string& file) {
-  for (const auto& name : names)
-    if (tests_every_pair(name) && mesh.triangles.size() > io::kMaxBruteForceTriangles)
-      throw io::UsageError("--engines: " + name + " tests every pair of triangles and takes at most " +
-                           std::to_string(io::kMaxBruteForceTriangles) + ", but " + file + " has " +
-                           std::to_string(mesh.triangles.size()) + " (use core or fcl)");
-}
-
 /// `"name":[[i,j],...]` or `"name":null`, written as it goes.
 void print_engine(const std::string& name, const std::optional<std::vector<TrianglePair>>& pairs) {
   std::cout << nlohmann::json(name).dump() << ":";
@@ -75,7 +64,7 @@ Command add_selfcollide(CLI::App& app) {
     for (const auto& e : self_collision_engines()) known.push_back(e.name);
     const auto names = parse_engine_list(o->engines, known, "self-collision");
     const io::ObjMesh mesh = io::load_obj_mesh(o->mesh);
-    check_brute_force_size(names, mesh, o->mesh);
+    for (const auto& name : names) check_self_collision_size(name, mesh.triangles.size(), o->mesh);
     std::cout << "{";
     for (std::size_t k = 0; k < names.size(); ++k) {
       if (k) std::cout << ",";

@@ -9,6 +9,7 @@
 #include "comparisons/cli/outside_options.h"
 #include "comparisons/cli/option_checks.h"
 #include "comparisons/cli/shard_option.h"
+#include "comparisons/cli/suite_session.h"
 #include "comparisons/engines/run_engines.h"
 #include "comparisons/io/atomic_file.h"
 #include "comparisons/io/gnuplot.h"
@@ -32,47 +33,10 @@ namespace tecido::cli {
 namespace {
 
 struct SuiteOptions {
-  std::vector<std::string> names;
-  std::string out = "out";
-  std::string tolerances;
-  std::string data;
+  SuiteSettings settings;
   std::string shard;
-  bool quick = false;
-  std::uint64_t seed = 20141;
-  int threads = 0;
-  std::string engines;
   outside::OutsideOptions outside;
 };
-
-/// The suites named (`all` = every one; with --shard, every sweep, the others listed in `skipped`).
-std::vector<const suites::SuiteEntry*> chosen_suites(const std::vector<std::string>& names, bool sharded,
-                                                     std::string& skipped) {
-  const auto& reg = suites::suite_registry();
-  std::vector<const suites::SuiteEntry*> chosen;
-  for (const auto& name : names) {
-    if (name == "all") {
-      for (const auto& s : reg) {
-        if (sharded && !s.sweep) skipped += (skipped.empty() ? "" : ", ") + s.name;
-        else chosen.push_back(&s);
-      }
-      continue;
-    }
-    auto it = std::find_if(reg.begin(), reg.end(), [&](const suites::SuiteEntry& e) { return e.name == name; });
-    if (it == reg.end()) {
-      std::string all;
-      for (const auto& s : reg) all += (all.empty() ? "" : ", ") + s.name;
-      throw io::UsageError("unknown suite \"" + name + "\" (known: " + all + ", all)");
-    }
-    if (sharded && !it->sweep) {
-      std::string can;
-      for (const auto& s : reg)
-        if (s.sweep) can += (can.empty() ? "" : ", ") + s.name;
-      throw io::UsageError("--shard: suite \"" + name + "\" cannot be sharded (only " + can + " can)");
-    }
-    chosen.push_back(&*it);
-  }
-  return chosen;
-}
 
 /// --shard i/n: the chosen sweeps' cases of this shard, into DIR/shard.json.
 int run_shard(const std::vector<const suites::SuiteEntry*>& chosen, const suites::SuiteContext& ctx,
@@ -98,63 +62,22 @@ int run_shard(const std::vector<const suites::SuiteEntry*>& chosen, const suites
   return 0;
 }
 
-/// The chosen suites in order, a progress line each on stderr, then the report.
-int run_suites(const std::vector<const suites::SuiteEntry*>& chosen, const suites::SuiteContext& ctx) {
-  io::create_output_directories(ctx.out_dir);
-  std::vector<suites::SuiteResult> results;
-  for (const auto* s : chosen) {
-    std::cerr << "suite " << s->name << " ..." << std::flush;
-    const auto t0 = std::chrono::steady_clock::now();
-    suites::SuiteResult r;
-    try {
-      r = s->run(ctx);
-    } catch (...) {
-      std::cerr << "\n";  // end the progress line: the error gets a line of its own
-      throw;
-    }
-    r.name = s->name;
-    r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    int failed = 0;
-    for (const auto& c : r.checks) failed += c.pass ? 0 : 1;
-    // On a terminal a sweep's progress bar took the line: name the suite again.
-    if (s->sweep && ::isatty(2) == 1) std::cerr << "suite " << s->name << ":";
-    std::cerr << " " << r.checks.size() - failed << " passed, " << failed << " failed (" << r.seconds << " s)\n";
-    for (const std::string& line : r.stderr_lines) std::cerr << "  " << line << "\n";
-    results.push_back(std::move(r));
+int run_suite_command(SuiteOptions o) {
+  o.settings.sharded = !o.shard.empty();
+  const SuiteSession session(o.settings, [&] {
+    if (o.settings.sharded && o.outside.any())
+      throw io::UsageError("--shard: outside engines (--plugin, --engine-cmd) run unsharded only");
+    return load_outside_engines(o.outside);
+  });
+  const suites::SuiteContext& ctx = session.context();
+  if (o.settings.sharded) {
+    if (!session.skipped().empty())
+      std::cerr << "suite: --shard: skipping " << session.skipped() << " (not split into cases; run them unsharded)\n";
+    return run_shard(session.chosen(), ctx, o.shard);
   }
-  const int failed = suites::write_report(results, ctx);
+  const int failed = suites::write_report(session.run(std::cerr), ctx);
   std::cout << "report: " << ctx.out_dir << "/report.md (" << failed << " failed checks)\n";
   return failed == 0 ? 0 : 1;
-}
-
-int run_suite_command(const SuiteOptions& o) {
-  const bool sharded = !o.shard.empty();
-  std::string skipped;
-  const auto chosen = chosen_suites(o.names, sharded, skipped);
-  suites::SuiteContext ctx;
-  ctx.data_dir = o.data.empty() ? std::string(TECIDO_SOURCE_DIR) + "/data" : o.data;
-  const suites::Tolerances tol = suites::Tolerances::load(o.tolerances.empty() ? ctx.data_dir + "/tolerances.json" : o.tolerances);
-  ctx.out_dir = o.out;
-  ctx.quick = o.quick;
-  ctx.seed = o.seed;
-  ctx.threads = o.threads > 0 ? o.threads : std::max(1u, std::thread::hardware_concurrency());
-  ctx.tolerances = &tol;
-  ctx.gnuplot = io::gnuplot_available();
-  ctx.progress = true;
-  io::check_output_dir(ctx.out_dir);
-  const io::OutputDirLock out_lock(ctx.out_dir);  // a second run into this --out refuses
-  if (sharded && o.outside.any())
-    throw io::UsageError("--shard: outside engines (--plugin, --engine-cmd) run unsharded only");
-  const auto outside = load_outside_engines(o.outside);
-  ctx.outside = outside;
-  if (!o.engines.empty()) {
-    std::vector<std::string> known = builtin_engine_names();
-    for (const auto& e : outside->all()) known.push_back(e->name());
-    ctx.engines = parse_engine_list(o.engines, known, "suite");
-  }
-  if (!sharded) return run_suites(chosen, ctx);
-  if (!skipped.empty()) std::cerr << "suite: --shard: skipping " << skipped << " (not split into cases; run them unsharded)\n";
-  return run_shard(chosen, ctx, o.shard);
 }
 
 Command add_suite(CLI::App& app) {
@@ -162,16 +85,16 @@ Command add_suite(CLI::App& app) {
   std::string list;
   for (const auto& s : suites::suite_registry()) list += "\n  " + s.name + ": " + s.summary;
   CLI::App* sub = app.add_subcommand("suite", "Run comparison suites and write report.json and report.md. Suites:" + list);
-  sub->add_option("names", o->names, "Suite names, or all")->required();
-  sub->add_option("--out", o->out, "Output directory")->capture_default_str()->check(non_empty());
-  sub->add_flag("--quick", o->quick, "Smaller counts, same checks");
-  sub->add_option("--seed", o->seed, "Seed of every random input (written into the report)")
+  sub->add_option("names", o->settings.names, "Suite names, or all")->required();
+  sub->add_option("--out", o->settings.out, "Output directory")->capture_default_str()->check(non_empty());
+  sub->add_flag("--quick", o->settings.quick, "Smaller counts, same checks");
+  sub->add_option("--seed", o->settings.seed, "Seed of every random input (written into the report)")
       ->capture_default_str()
       ->check(unsigned_integer());
-  sub->add_option("--threads", o->threads, "Worker threads (0 = all cores); results do not depend on it")
+  sub->add_option("--threads", o->settings.threads, "Worker threads (0 = all cores); results do not depend on it")
       ->check(integer_in(0, io::kMaxThreads));
-  sub->add_option("--tolerances", o->tolerances, "Tolerance file (default data/tolerances.json)")->check(non_empty());
-  sub->add_option("--data", o->data, "Data directory (default: the source tree's data/)")->check(non_empty());
+  sub->add_option("--tolerances", o->settings.tolerances, "Tolerance file (default data/tolerances.json)")->check(non_empty());
+  sub->add_option("--data", o->settings.data, "Data directory (default: the source tree's data/)")->check(non_empty());
   std::string sweeps;
   for (const auto& s : suites::suite_registry())
     if (s.sweep) sweeps += (sweeps.empty() ? "" : ", ") + s.name;
@@ -179,7 +102,7 @@ Command add_suite(CLI::App& app) {
                   "Only the cases whose index % n == i of the sweep suites (" + sweeps +
                       "), e.g. 0/8: writes DIR/shard.json; join the shards with `tecido merge`")
       ->check(shard_spec());
-  sub->add_option("--engines", o->engines,
+  sub->add_option("--engines", o->settings.engines,
                   "Comma-separated engines the suites run (built-in or outside, by name; default: every one). A "
                   "suite runs those it knows; its referee always runs");
   add_outside_options(sub, o->outside);

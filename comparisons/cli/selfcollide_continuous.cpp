@@ -3,8 +3,7 @@
 #include "comparisons/cli/commands.h"
 #include "comparisons/io/input_error.h"
 #include "comparisons/io/obj_mesh.h"
-#include "core/cloth/continuous_self_collision.h"
-#include "reference/exact_ccd.h"
+#include "comparisons/engines/continuous_self_collision_engines.h"
 
 #include <nlohmann/json.hpp>
 
@@ -13,8 +12,6 @@
 namespace tecido::cli {
 
 namespace {
-
-CcdAnswer exact_test(const CcdQuery& q) { return reference::to_ccd_answer(reference::exact_ccd(q)); }
 
 /// The two frames must be one mesh: same vertex count, same triangles in the same order.
 void check_same_mesh(const io::ObjMesh& a, const io::ObjMesh& b, const std::string& start, const std::string& end) {
@@ -31,23 +28,6 @@ void check_same_mesh(const io::ObjMesh& a, const io::ObjMesh& b, const std::stri
                                std::to_string(a.triangle_line[k]) + "): the frames must have the same faces");
 }
 
-void check_size(const std::string& engine, std::size_t triangles, std::size_t limit, const std::string& file) {
-  if (triangles > limit)
-    throw io::UsageError("--engines: " + engine + " tests every pair and takes at most " + std::to_string(limit) +
-                         " triangles, but " + file + " has " + std::to_string(triangles) + " (use core)");
-}
-
-ContinuousContacts run_engine(const std::string& name, const io::ObjMesh& m0, const io::ObjMesh& m1) {
-  const auto& x0 = m0.vertices;
-  const auto& x1 = m1.vertices;
-  const auto& tris = m0.triangles;
-  if (name == "core-brute") return continuous_self_collision_brute(x0, x1, tris);
-  if (name == "exact") return continuous_self_collision_brute(x0, x1, tris, &exact_test);
-  ContinuousSelfCollisionDetector det(tris, x0);
-  const ContinuousContacts& candidates = det.detect(x0, x1);
-  return filter_contacts(candidates, x0, x1, tris, [](const CcdQuery& q) { return reference::exact_ccd(q).hit; });
-}
-
 nlohmann::ordered_json contacts_json(const ContinuousContacts& c) {
   nlohmann::ordered_json vf = nlohmann::ordered_json::array(), ee = nlohmann::ordered_json::array();
   for (const auto& p : c.vertex_face) vf.push_back({p[0], p[1]});
@@ -57,21 +37,13 @@ nlohmann::ordered_json contacts_json(const ContinuousContacts& c) {
 
 }  // namespace
 
-const std::vector<std::string>& continuous_selfcollide_engines() {
-  static const std::vector<std::string> names = {"core", "core-brute", "exact"};
-  return names;
-}
-
 int run_selfcollide_continuous(const std::string& start, const std::string& end, const std::string& engines) {
-  const auto names = parse_engine_list(engines, continuous_selfcollide_engines(), "continuous self-collision");
+  const auto names = parse_engine_list(engines, continuous_self_collision_engines(), "continuous self-collision");
   const io::ObjMesh m0 = io::load_obj_mesh(start), m1 = io::load_obj_mesh(end);
   check_same_mesh(m0, m1, start, end);
-  for (const auto& n : names) {
-    if (n == "core-brute") check_size(n, m0.triangles.size(), kMaxBruteForceTriangles, start);
-    if (n == "exact") check_size(n, m0.triangles.size(), kMaxExactContinuousTriangles, start);
-  }
+  for (const auto& n : names) check_continuous_self_collision_size(n, m0.triangles.size(), start);
   nlohmann::ordered_json out = nlohmann::ordered_json::object();
-  for (const auto& n : names) out[n] = contacts_json(run_engine(n, m0, m1));
+  for (const auto& n : names) out[n] = contacts_json(continuous_self_collision_contacts(n, m0.vertices, m1.vertices, m0.triangles));
   std::cout << out.dump() << "\n";
   return 0;
 }

@@ -71,6 +71,23 @@ bool answers_ccd(const outside::OutsideEngine& engine) {
   return c.ccd_vertex_face || c.ccd_edge_edge;
 }
 
+std::vector<std::optional<CcdAnswer>> ccd_answers(const std::string& name, const std::vector<CcdQuery>& queries,
+                                                  const outside::OutsideEngines* outside) {
+  if (const CcdEngine* e = find_ccd_engine(name)) {
+    std::vector<std::optional<CcdAnswer>> out;
+    out.reserve(queries.size());
+    io::CcdQueryEntry entry;
+    for (const auto& q : queries) {
+      entry.query = q;
+      out.push_back(answer_ccd_entry(*e, entry));
+    }
+    return out;
+  }
+  auto e = outside ? outside->find(name) : nullptr;
+  if (!e || !answers_ccd(*e)) throw std::invalid_argument("no engine \"" + name + "\" answers that question");
+  return e->ccd(queries);
+}
+
 std::vector<outside::OutsideEnginePtr> outside_ccd_engines(const outside::OutsideEngines* outside) {
   std::vector<outside::OutsideEnginePtr> out;
   if (outside)

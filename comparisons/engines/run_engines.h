@@ -29,6 +29,10 @@ std::vector<std::optional<SegmentPlaneHit>> segment_plane_answers(const std::str
 bool answers_ccd(const outside::OutsideEngine& engine);
 /// Built-in ccd engines (ccd_engines.h), then the outside engines answering ccd of some kind.
 std::vector<std::string> ccd_engine_names(const outside::OutsideEngines* outside);
+/// Engine `name`'s answers to `queries` (doubles), in order: a built-in engine query by query
+/// (answer_ccd_entry), an outside one in one batch (std::invalid_argument for an unknown name).
+std::vector<std::optional<CcdAnswer>> ccd_answers(const std::string& name, const std::vector<CcdQuery>& queries,
+                                                  const outside::OutsideEngines* outside);
 /// The outside engines answering ccd, in load order (`outside` may be null).
 std::vector<outside::OutsideEnginePtr> outside_ccd_engines(const outside::OutsideEngines* outside);
 

@@ -1,5 +1,7 @@
 #include "comparisons/engines/self_collision_engines.h"
 
+#include "comparisons/io/input_error.h"
+#include "comparisons/io/limits.h"
 #include "reference/exact_referee.h"
 #include "reference/fcl_adapter.h"
 
@@ -38,6 +40,15 @@ const SelfCollisionEngine* find_self_collision_engine(const std::string& name) {
   for (const auto& e : self_collision_engines())
     if (e.name == name) return &e;
   return nullptr;
+}
+
+void check_self_collision_size(const std::string& engine, std::size_t triangles, const std::string& mesh,
+                               const std::string& option) {
+  const bool every_pair = engine == "core-brute" || engine == "exact";
+  if (every_pair && triangles > io::kMaxBruteForceTriangles)
+    throw io::UsageError(option + ": " + engine + " tests every pair of triangles and takes at most " +
+                         std::to_string(io::kMaxBruteForceTriangles) + ", but " + mesh + " has " +
+                         std::to_string(triangles) + " (use core or fcl)");
 }
 
 }  // namespace tecido

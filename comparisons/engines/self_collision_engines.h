@@ -6,6 +6,7 @@
 #include "core/cloth/self_collision.h"
 
 #include <array>
+#include <cstddef>
 #include <optional>
 #include <string>
 #include <vector>
@@ -23,5 +24,11 @@ struct SelfCollisionEngine {
 /// (all pairs + exact narrow phase), then the references when they are built.
 const std::vector<SelfCollisionEngine>& self_collision_engines();
 const SelfCollisionEngine* find_self_collision_engine(const std::string& name);
+
+/// io::UsageError "<option>: <engine> tests every pair of triangles and takes at most N, but
+/// <mesh> has M (use core or fcl)" when an all-pairs engine (core-brute, exact) is given more than
+/// io::kMaxBruteForceTriangles triangles.
+void check_self_collision_size(const std::string& engine, std::size_t triangles, const std::string& mesh,
+                               const std::string& option = "--engines");
 
 }  // namespace tecido

@@ -21,6 +21,14 @@ class InputError : public std::runtime_error {
   std::string file_, where_, problem_;
 };
 
+/// An input file that cannot be read at all (missing, a directory, unreadable, too large;
+/// text_file.h): an InputError the CLI prints alike, which the Python module raises as OSError
+/// rather than ValueError.
+class FileError : public InputError {
+ public:
+  FileError(const std::string& file, const std::string& problem) : InputError(file, "", problem) {}
+};
+
 /// A command-line usage error (unknown engine name, bad option value): exit 2 as well.
 class UsageError : public std::runtime_error {
  public:

@@ -52,4 +52,20 @@ Json run_result_json(const Simulation& sim) {
   return out;
 }
 
+io::Json self_collision_json(const SelfCollisionResponder& r) {
+  const SelfCollisionStats& st = r.stats();
+  return {{"response", self_collision_response_name(r.settings().response)},
+          {"checks", st.checks},
+          {"contact_checks", st.contact_checks},
+          {"share", st.checks ? static_cast<double>(st.contact_checks) / st.checks : 0.0},
+          {"pairs", st.pairs},
+          {"max_pairs", st.max_pairs},
+          {"pairs_now", st.last_pairs},
+          {"gia_regions", st.gia_regions},
+          {"gia_failed_checks", st.gia_failed_checks},
+          {"gia_unresolved_pairs", st.gia_unresolved_pairs},
+          {"unseparated_cut_edges", st.unseparated_cut_edges},
+          {"pushed_particles", st.pushed_particles}};
+}
+
 }  // namespace tecido::io

@@ -9,10 +9,15 @@
 /// edge_contacts.h).
 /// Numbers are printed with 17 significant digits, so the file round-trips bit for bit.
 #include "comparisons/io/json_reader.h"
+#include "core/simulation/self_collision_response.h"
 #include "core/simulation/simulation.h"
 
 namespace tecido::io {
 
 Json run_result_json(const Simulation& sim);
+/// The "self_collision" member of a run with self-collision: {response, checks, contact_checks,
+/// share, pairs, max_pairs, pairs_now, gia_regions, gia_failed_checks, gia_unresolved_pairs,
+/// unseparated_cut_edges, pushed_particles}.
+Json self_collision_json(const SelfCollisionResponder& r);
 
 }  // namespace tecido::io

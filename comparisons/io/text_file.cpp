@@ -28,9 +28,9 @@ std::string read_bounded(int fd, const std::string& path, std::size_t expected) 
     if (n == 0) return text;
     if (n < 0) {
       if (errno == EINTR) continue;
-      throw InputError(path, "", std::string("read error: ") + std::strerror(errno));
+      throw FileError(path, std::string("read error: ") + std::strerror(errno));
     }
-    if (text.size() + static_cast<std::size_t>(n) > kMaxInputBytes) throw InputError(path, "", too_big_message());
+    if (text.size() + static_cast<std::size_t>(n) > kMaxInputBytes) throw FileError(path, too_big_message());
     text.append(buf, static_cast<std::size_t>(n));
   }
 }
@@ -41,16 +41,16 @@ std::string read_text_file(const std::string& path) {
   namespace fs = std::filesystem;
   std::error_code ec;
   const auto st = fs::status(path, ec);
-  if (ec || !fs::exists(st)) throw InputError(path, "", "no such file");
-  if (fs::is_directory(st)) throw InputError(path, "", "is a directory, not a file");
+  if (ec || !fs::exists(st)) throw FileError(path, "no such file");
+  if (fs::is_directory(st)) throw FileError(path, "is a directory, not a file");
   std::size_t expected = 0;
   if (fs::is_regular_file(st)) {
     const auto size = fs::file_size(path, ec);
-    if (!ec && size > kMaxInputBytes) throw InputError(path, "", too_big_message());
+    if (!ec && size > kMaxInputBytes) throw FileError(path, too_big_message());
     if (!ec) expected = static_cast<std::size_t>(size);
   }
   const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
-  if (fd < 0) throw InputError(path, "", std::string("cannot be opened for reading: ") + std::strerror(errno));
+  if (fd < 0) throw FileError(path, std::string("cannot be opened for reading: ") + std::strerror(errno));
   try {
     std::string text = read_bounded(fd, path, expected);
     ::close(fd);

@@ -1,6 +1,8 @@
 #!/usr/bin/env python3
 """An example tecido engine in Python (standard library only), spoken to in JSON lines:
-`tecido ... --engine-cmd py=python3 examples/python/tecido_engine.py`.
+`tecido ... --engine-cmd py=python3 examples/python/tecido_engine.py`, or called in-process by
+tecido's Python module as the object Engine() (docs/python.md): `tecido.tri_tri(a, b,
+engine=Engine())`, `tecido.suite(["tritri"], engines=[Engine()])`. Both doors run the same functions.
 
 It answers these questions (see docs/engines.md, "Validate your own engine"):
   tri_tri   two closed triangles: does some edge of either cross the other (Moller-Trumbore
@@ -190,6 +192,41 @@ def finite(points):
 
 
 MODELLED = set()  # features beyond particles, springs, gravity and drag: none
+
+
+class Engine:
+    """This engine as an object for tecido's Python module: the methods answer what the JSON-lines
+    ops answer (docs/python.md, "Your engine in Python"), with the same functions."""
+
+    name = "py"
+    order = 2  # the midpoint method's global order, as hello claims
+
+    def __init__(self):
+        self.sim = None
+
+    def tri_tri(self, a, b):
+        return tri_tri(a, b)
+
+    def tri_tri_batch(self, a, b):
+        return [tri_tri(p, q) for p, q in zip(a.tolist(), b.tolist())]
+
+    def ccd(self, kind, t0, t1):
+        return ccd(kind, t0, t1)
+
+    def ccd_batch(self, kinds, t0, t1):
+        return [ccd(k, p, q) for k, p, q in zip(kinds, t0.tolist(), t1.tolist())]
+
+    def create(self, scene, features):
+        missing = [f for f in features if f not in MODELLED]
+        if missing:
+            return "not modelled: " + ", ".join(missing)
+        self.sim = Midpoint(scene)
+        return None
+
+    def step(self, dt, steps):
+        for _ in range(steps):
+            self.sim.step(dt)
+        return finite(self.sim.x), finite(self.sim.v)
 
 
 def answer(req, state):

@@ -155,26 +155,10 @@ std::vector<std::optional<CcdAnswer>> ProcessEngine::ccd(const std::vector<CcdQu
   return out;
 }
 
-void ProcessEngine::take_scene() {
-  std::unique_lock<std::mutex> lock(scene_mutex_);
-  if (scene_taken_ && scene_holder_ == std::this_thread::get_id())
-    throw EngineError("engine " + name_ + " (`" + process_.command() + "`)", "op create",
-                      "asked for a second simulation while one is running (the process holds one scene at a time)");
-  scene_free_.wait(lock, [&] { return !scene_taken_; });
-  scene_taken_ = true;
-  scene_holder_ = std::this_thread::get_id();
-}
-
-void ProcessEngine::release_scene() {
-  {
-    std::lock_guard<std::mutex> lock(scene_mutex_);
-    scene_taken_ = false;
-  }
-  scene_free_.notify_one();
-}
+void ProcessEngine::release_scene() { scene_.release(); }
 
 Creation ProcessEngine::create(const Scene& scene) {
-  take_scene();
+  scene_.take("engine " + name_ + " (`" + process_.command() + "`)", "the process");
   Creation c;
   try {
     const std::optional<std::string> refusal = [&] {

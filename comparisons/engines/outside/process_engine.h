@@ -16,12 +16,11 @@
 #include "comparisons/engines/outside/json_lines_process.h"
 #include "comparisons/engines/outside/outside_engine.h"
 #include "comparisons/engines/outside/process_protocol.h"
+#include "comparisons/engines/outside/scene_lease.h"
 
 #include <chrono>
-#include <condition_variable>
 #include <memory>
 #include <mutex>
-#include <thread>
 
 namespace tecido::outside {
 
@@ -62,15 +61,11 @@ class ProcessEngine final : public OutsideEngine, public std::enable_shared_from
  private:
   /// Answers `queries` of one op through the batched form when supported.
   std::vector<io::Json> answer_all(const std::string& op, const std::vector<io::Json>& queries);
-  void take_scene();
 
   std::string name_;
   JsonLinesProcess process_;
   Hello hello_;
-  std::mutex scene_mutex_;
-  std::condition_variable scene_free_;
-  bool scene_taken_ = false;
-  std::thread::id scene_holder_;
+  SceneLease scene_;
   std::mutex failure_mutex_;
   std::string failed_op_, failure_;  ///< the first failure (empty while the engine works)
 };
