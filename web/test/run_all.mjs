@@ -67,9 +67,9 @@ async function loadTime(browser) {
   const dir = join(out, 'cloth64');
   mkdirSync(dir, { recursive: true });
   const scene = {
-    integrator: 'symplectic', dt: 0.002, steps: 100, gravity: [0, -9.81, 0], air_drag: 0.01,
+    integrator: 'symplectic', dt: 0.001, steps: 100, gravity: [0, -9.81, 0], air_drag: 0.01,
     cloth: { rows: 64, cols: 64, spacing: 0.02, origin: [-0.63, 1, -0.63], axis_u: [1, 0, 0], axis_v: [0, 0, 1],
-             total_mass: 0.5, stiffness_b: 20, stiffness_a: 4, pins: [[0, 0], [0, 63]] },
+             total_mass: 5, stiffness_b: 20, stiffness_a: 4, pins: [[0, 0], [0, 63]] },
   };
   writeFileSync(join(dir, 'scene.json'), JSON.stringify(scene));
   run(['run', join(dir, 'scene.json'), '--frame-every', '1', '--out', join(dir, 'out')]);
