@@ -83,12 +83,24 @@ std::string checks_table(const SuiteResult& r) {
   return h + "</tbody>\n</table>\n</details>\n";
 }
 
+std::string page_link_html(const PageLink& v) {
+  return view::safe_link_target(v.href) ? "<a href=\"" + html_text(v.href) + "\">" + html_text(v.text) + "</a>"
+                                        : html_text(v.text);
+}
+
+/// The suite's pages: the first link of a group is the page, the ones after it with a '#' its entries, on one line.
 std::string views_list(const SuiteResult& r) {
   if (r.views.empty()) return "";
   std::string h = "<h3>3-D views</h3>\n<ul class=\"views\">\n";
-  for (const PageLink& v : r.views)
-    h += view::safe_link_target(v.href) ? "<li><a href=\"" + html_text(v.href) + "\">" + html_text(v.text) + "</a></li>\n"
-                                        : "<li>" + html_text(v.text) + "</li>\n";
+  for (std::size_t k = 0; k < r.views.size();) {
+    h += "<li>" + page_link_html(r.views[k]);
+    const std::string page = r.views[k].href;
+    std::size_t e = ++k;
+    for (; e < r.views.size() && r.views[e].href.rfind(page + "#", 0) == 0; ++e)
+      h += std::string(e == k ? ": " : " · ") + page_link_html(r.views[e]);
+    k = e;
+    h += "</li>\n";
+  }
   return h + "</ul>\n";
 }
 

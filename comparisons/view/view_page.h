@@ -4,7 +4,7 @@
 /// `window.TECIDO_VIEW = {...};` (JSON, ASCII only: every other character as \uXXXX), which the
 /// page loads before tecido-viewer.js: a page opened from disk may not fetch a file (Chromium
 /// refuses fetch and XHR from file://) but may run its own scripts. `data["kind"]` picks the view
-/// (web/src/main.js): "run", "tritri", "plane", "ccd", "selfcollision". The page's title is text
+/// (web/src/main.js): "run", "tritri", "plane", "ccd". The page's title is text
 /// (view/html_text.h); the data's strings are shown by the viewer as text (textContent), never as HTML.
 #include "comparisons/io/json_reader.h"
 

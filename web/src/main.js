@@ -2,9 +2,8 @@
 // (a classic script bundled by esbuild, so that it runs from file://) draws it.
 import { showRun } from './run_view.js';
 import { showTriTri, showPlane, showCcd } from './disagreement_views.js';
-import { showFrames } from './frame_view.js';
 
-const views = { run: showRun, tritri: showTriTri, plane: showPlane, ccd: showCcd, selfcollision: showFrames };
+const views = { run: showRun, tritri: showTriTri, plane: showPlane, ccd: showCcd };
 
 function start() {
   const notice = document.getElementById('no-viewer');

@@ -13,7 +13,7 @@ TEST(MarkdownHtml, HeadingsParagraphsAndInline) {
 TEST(MarkdownHtml, TableWithAlignmentAndEscapedBar) {
   const std::string md = "| a | b \\| c |\n|---|---:|\n| `p|q` | 1.5 |\n";
   EXPECT_EQ(markdown_html(md),
-            "<table>\n<thead><tr><th>a</th><th class=\"num\">b | c</th></tr></thead>\n<tbody>\n"
+            "<table>\n<thead><tr><th>a</th><th class=\"num\">b | c</th></tr>\n</thead>\n<tbody>\n"
             "<tr><td><code>p|q</code></td><td class=\"num\">1.5</td></tr>\n</tbody>\n</table>\n");
 }
 
