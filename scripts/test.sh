@@ -39,6 +39,8 @@ stage apt bash scripts/setup.sh
 stage configure cmake --preset release
 stage release-build cmake --build --preset release -j "$JOBS"
 stage release-tests ctest --preset release -j "$JOBS"
+# The pages (report.html, the 3-D views) in headless Chromium: web/test/, docs/viewer.md.
+stage browser-tests bash scripts/browser_test.sh
 if [ "${TECIDO_SKIP_ASAN:-0}" != "1" ]; then
   stage asan-configure cmake --preset asan
   stage asan-build cmake --build --preset asan -j "$JOBS"

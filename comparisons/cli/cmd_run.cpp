@@ -7,7 +7,9 @@
 // frames drawn by gnuplot (skipped, with a note, without gnuplot).
 // A scene with `self_collision` runs with its post-step hook; the result then carries
 // "self_collision": {checks, contact_checks, pairs, ...}. Obstacles are drawn into every frame at
-// that frame's time (moving ones move).
+// that frame's time (moving ones move). DIR/index.html (with index.data.js and the viewer's files)
+// plays the frames in a browser: the cloth, the obstacles, the triangle pairs in self-contact and
+// the springs through an obstacle at each frame (comparisons/view/run_view.h).
 // A run that goes unstable is a result (exit 0); where the scene has springs, one line on stderr
 // gives the step its stiffest spring allows for the integrator used (suites/stability/step_hint.h).
 // Every limit is checked before the first step: the options' domains (cli/option_checks.h), the
@@ -27,6 +29,8 @@
 #include "comparisons/io/stale_frames.h"
 #include "comparisons/io/work_limit.h"
 #include "comparisons/suites/stability/step_hint.h"
+#include "comparisons/view/run_view.h"
+#include "comparisons/view/view_page.h"
 #include "core/simulation/self_collision_response.h"
 #include "core/simulation/simulation.h"
 
@@ -82,9 +86,13 @@ long long frame_interval(const RunOptions& o, const Scene& scene) {
   return o.frame_every;
 }
 
-/// Runs with frames and the key-frame picture in o.out; returns the picture's note when not drawn.
+/// Runs with frames, the key-frame picture and the page (DIR/index.html) in o.out; returns the
+/// picture's note when not drawn.
 std::string run_with_frames(Simulation& sim, const Scene& scene, const RunOptions& o, long long every,
                             io::FrameWriter& frames) {
+  view::RunView page(scene);
+  const long long page_stride = view::view_frame_stride(scene.steps, every, scene.particles.size());
+  long long written = 0;
   // Key frames for the picture: the start, one and two thirds, the end.
   const long long n = scene.steps;
   const long long keys[4] = {0, n / 3, (2 * n) / 3, n};
@@ -92,7 +100,10 @@ std::string run_with_frames(Simulation& sim, const Scene& scene, const RunOption
   auto capture = [&](const Simulation& s) {
     const long long k = s.steps_done();
     const Particles& p = s.particles();
-    if (k % every == 0 || k == n) frames.write(k, s.time(), p.x, p.v, scene.triangles, io::obstacle_surfaces(scene.obstacles, s.time()));
+    if ((k % every == 0 || k == n) &&
+        frames.write(k, s.time(), p.x, p.v, scene.triangles, io::obstacle_surfaces(scene.obstacles, s.time())) &&
+        (written++ % page_stride == 0 || k == n))
+      page.add(k, s.time(), p.x);
     for (long long key : keys)
       if (k == key && (key_frames.empty() || key_frames.back().step != k)) {
         key_frames.push_back({k, s.time(), p.x});
@@ -103,6 +114,7 @@ std::string run_with_frames(Simulation& sim, const Scene& scene, const RunOption
   sim.run(scene.steps, capture);
   if (sim.instability() && (key_frames.empty() || key_frames.back().step != sim.steps_done()))
     capture(sim);  // the last state reached (skipped if not finite)
+  view::write_view_page(o.out, "index", "tecido run " + o.scene, page.data("tecido run " + o.scene));
   std::string note;
   const bool plotted = io::plot_cloth_frames(o.out, "cloth", "tecido run " + o.scene, key_frames, scene.triangles,
                                              scene.forces.gravity, &note);
@@ -185,7 +197,7 @@ Command add_run(CLI::App& app) {
   sub->add_flag("--json", o->json, "Print the result as one JSON object");
   CLI::Option* out = sub->add_option("--out", o->out,
                                      "Directory for result.json, frames/ (OBJ per frame; an earlier run's frames there are "
-                                     "removed) and cloth.svg")
+                                     "removed), cloth.svg and index.html (the frames in 3-D in a browser)")
                          ->check(non_empty());
   o->every_opt = sub->add_option("--frame-every", o->frame_every,
                                  "With --out: write every K-th step's frame (default: about 100 frames)")

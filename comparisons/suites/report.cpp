@@ -3,6 +3,8 @@
 #include "comparisons/engines/outside/outside_engines.h"
 #include "comparisons/io/atomic_file.h"
 #include "comparisons/io/provenance.h"
+#include "comparisons/suites/report_html.h"
+#include "comparisons/view/viewer_assets.h"
 
 #include <fmt/format.h>
 
@@ -91,6 +93,8 @@ std::string report_markdown(const std::vector<SuiteResult>& results, const Suite
 int write_report(const std::vector<SuiteResult>& results, const SuiteContext& ctx) {
   io::write_file_atomic(ctx.out_dir + "/report.json", report_json(results, ctx).dump(2) + "\n");
   io::write_file_atomic(ctx.out_dir + "/report.md", report_markdown(results, ctx));
+  view::copy_viewer_assets(ctx.out_dir);  // tecido.css for report.html, the viewer for the views
+  io::write_file_atomic(ctx.out_dir + "/report.html", report_html(results, ctx));
   int failed = 0;
   for (const auto& r : results)
     for (const auto& c : r.checks) failed += c.pass ? 0 : 1;

@@ -17,7 +17,8 @@ std::string report_markdown(const std::vector<SuiteResult>& results, const Suite
 /// Relative margin of a check: min(value - lo, hi - value) / (hi - lo) (or absolute when the
 /// band has zero width); negative when the check fails, -inf for NaN.
 double check_margin(const Check& c);
-/// Writes out_dir/report.json and out_dir/report.md. Returns the number of failed checks.
+/// Writes out_dir/report.json, out_dir/report.md and out_dir/report.html (report_html.h, with the
+/// viewer's files beside it, view/viewer_assets.h). Returns the number of failed checks.
 int write_report(const std::vector<SuiteResult>& results, const SuiteContext& ctx);
 
 }  // namespace tecido::suites

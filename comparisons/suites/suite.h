@@ -41,12 +41,20 @@ struct SuiteContext {
   }
 };
 
+/// A page a suite wrote under out_dir (a 3-D view of its disagreements, comparisons/view/):
+/// report.html links to it. `href` is relative to out_dir ("ccd/disagreements.html#3").
+struct PageLink {
+  std::string text;
+  std::string href;
+};
+
 struct SuiteResult {
   std::string name;
   std::vector<Check> checks;
   std::string markdown;            ///< the suite's section of report.md (tables, plot links)
   std::vector<std::string> plots;  ///< file names written under out_dir
   io::Json data = io::Json::object();  ///< extra machine-readable results for report.json
+  std::vector<PageLink> views;     ///< its pages for report.html (not in report.md or report.json)
   double seconds = 0.0;            ///< wall time (not part of the determinism promise)
   /// Lines `tecido suite` prints on stderr under the suite's count of checks: an agreement suite's
   /// disagreements per engine, their first ids, the file holding them all and the replay command

@@ -8,6 +8,7 @@
 #include "comparisons/suites/ccd/families.h"
 #include "comparisons/suites/ccd/sheet_through_sheet.h"
 
+#include "comparisons/suites/agreement/disagreement_page.h"
 #include "comparisons/suites/agreement/replay.h"
 
 #include <fmt/format.h>
@@ -193,7 +194,7 @@ std::vector<agreement::EngineDisagreements> per_engine(const Plan& plan, const s
 /// DIR/ccd/disagreements.json from the families' disagreements (their queries regenerated); the
 /// report's paragraph, and the per-engine lines for stderr (the file named by its absolute path).
 std::string write_disagreements(const Plan& plan, const SuiteContext& ctx, const std::vector<FamilyResult>& results,
-                                std::vector<std::string>& stderr_out) {
+                                std::vector<std::string>& stderr_out, std::vector<PageLink>& views) {
   std::vector<ccd::KeptDisagreement> kept;
   const auto& fams = ccd::families();
   for (std::size_t k = 0; k < results.size(); ++k) {
@@ -203,7 +204,9 @@ std::string write_disagreements(const Plan& plan, const SuiteContext& ctx, const
                            plan.settings.max_disagreements, kept);
   }
   const std::string path = ctx.out_dir + "/" + kDisagreementFile;
-  io::write_file_atomic(path, ccd::disagreements_json(kept, plan.engine_names()).dump() + "\n");
+  const io::Json doc = ccd::disagreements_json(kept, plan.engine_names());
+  io::write_file_atomic(path, doc.dump() + "\n");
+  views = agreement::write_disagreement_page(ctx.out_dir, kDisagreementFile, "ccd", "queries", doc);
   const std::vector<agreement::EngineDisagreements> engines = per_engine(plan, results, kept);
   const agreement::ReplayCommand replay{"tecido ccd", "--queries"};
   stderr_out = agreement::stderr_lines("ccd", replay, std::filesystem::absolute(path).lexically_normal().string(), engines);
@@ -260,7 +263,7 @@ SuiteResult assemble(const Plan& plan_in, const SuiteContext& ctx, const std::ve
   res.markdown = ccd::method_markdown(plan.settings, plan.seed) + ccd::outside_markdown(plan.engines) +
                  ccd::kind_tables(CcdKind::VertexFace, fr, failed, vf_off) +
                  ccd::kind_tables(CcdKind::EdgeEdge, fr, failed, ee_off) + ccd::referee_table(fr, failed) +
-                 ccd::conclusions(fr, failed) + write_disagreements(plan, ctx, fr, res.stderr_lines) + sheet_md;
+                 ccd::conclusions(fr, failed) + write_disagreements(plan, ctx, fr, res.stderr_lines, res.views) + sheet_md;
   res.data = ccd::results_json(fr);
   res.checks = plan.checks.finish();
   return res;

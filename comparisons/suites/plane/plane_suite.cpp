@@ -2,6 +2,7 @@
 
 #include "comparisons/io/atomic_file.h"
 #include "comparisons/suites/agreement/block_result.h"
+#include "comparisons/suites/agreement/disagreement_page.h"
 #include "comparisons/suites/agreement/disagreements.h"
 #include "comparisons/suites/agreement/replay.h"
 #include "comparisons/suites/plane/agreement_case.h"
@@ -128,7 +129,7 @@ void record_agreement(CheckList& checks, const Plan& plan, const AgreementTable&
 /// each engine, also on stderr); the checks' values.
 std::string agreement_section(CheckList& checks, const Plan& plan, const std::string& out_dir,
                               const std::vector<io::Json>& results, io::Json& data,
-                              std::vector<std::string>& stderr_out) {
+                              std::vector<std::string>& stderr_out, std::vector<PageLink>& views) {
   AgreementTable table = agreement::empty_table(plan.categories.size(), engine_names(plan));
   for (std::size_t i = 0; i < plan.layout.blocks.size(); ++i) {
     const CaseRange& range = plan.layout.blocks[i];
@@ -145,6 +146,7 @@ std::string agreement_section(CheckList& checks, const Plan& plan, const std::st
   agreement::label_entries(doc, "cases", table.engines, kept_d, "t");
   const std::string path = out_dir + "/" + kDisagreementFile;
   io::write_file_atomic(path, doc.dump(1) + "\n");
+  views = agreement::write_disagreement_page(out_dir, kDisagreementFile, "plane", "cases", doc);
   data["agreement"] = agreement_json(plan.categories, table);
   // The plane suite runs built-in engines only: no door to carry.
   const auto per_engine =
@@ -233,7 +235,7 @@ SuiteResult assemble(const Plan& plan, const std::string& out_dir, const std::ve
   // The registry always holds the exact referee (the reference engines are always built).
   if (!plan.referee) throw std::logic_error("plane: the exact referee is not registered");
   std::string md = method_markdown(plan.settings, plan.seed, kReferee, plan.categories) +
-                   agreement_section(checks, plan, out_dir, results, res.data, res.stderr_lines);
+                   agreement_section(checks, plan, out_dir, results, res.data, res.stderr_lines, res.views);
   md += contact_section(checks, plan, out_dir, results, res.data);
   md += drop_section(checks, plan, results, res.data);
   res.markdown = md + "\nWhat runs is set in `comparisons/suites/plane/settings.h`; the tolerance file holds the bands only.\n";

@@ -3,6 +3,7 @@
 #include "comparisons/engines/outside/outside_engines.h"
 #include "comparisons/io/atomic_file.h"
 #include "comparisons/suites/agreement/block_result.h"
+#include "comparisons/suites/agreement/disagreement_page.h"
 #include "comparisons/suites/agreement/disagreements.h"
 #include "comparisons/suites/agreement/replay.h"
 #include "comparisons/suites/tritri/case_index.h"
@@ -112,6 +113,7 @@ SuiteResult assemble(const Plan& plan, const SuiteContext& ctx, const std::vecto
   agreement::label_entries(doc, "pairs", table.engines, kept_d, nullptr);
   const std::string path = ctx.out_dir + "/" + kDisagreementFile;
   io::write_file_atomic(path, doc.dump() + "\n");
+  res.views = agreement::write_disagreement_page(ctx.out_dir, kDisagreementFile, "tritri", "pairs", doc);
   const auto per_engine = agreement::table_disagreements(table, door_options(plan), kept_d, kept_ids);
   const agreement::ReplayCommand replay{"tecido tritri", "--pairs"};
   res.stderr_lines =

@@ -237,7 +237,8 @@ TEST(LongRun, KilledSuiteLeavesNoHalfWrittenReport) {
       const std::string md = testing::slurp(out / "report.md");
       EXPECT_EQ(tail(md, 300), ref_md_tail) << "report.md is not complete after a kill at " << f << " x run time";
     }
-    expect_only_known_files(out, {"report.json", "report.md"});
+    expect_only_known_files(out, {"report.json", "report.md", "report.html", "tecido.css", "tecido-viewer.js",
+                                  "disagreements.html", "disagreements.data.js"});
   }
   EXPECT_GT(killed, 0) << "no run was killed: the delays are all too long";
   std::printf("[ killed %d of %d runs; report.json absent %d, complete %d; full run %.3f s ]\n", killed,
@@ -276,7 +277,8 @@ TEST(LongRun, KilledRunLeavesNoHalfWrittenResult) {
         }
       }
     }
-    expect_only_known_files(out, {"result.json", "cloth.svg"});
+    expect_only_known_files(out, {"result.json", "cloth.svg", "index.html", "index.data.js", "tecido.css",
+                                  "tecido-viewer.js"});
   }
   EXPECT_GT(killed, 0);
   std::printf("[ killed %d of %d runs; result.json complete in %d, absent in the others; full run %.3f s ]\n", killed,
