@@ -36,7 +36,7 @@ async function notBlank(page, what) {
 /// tecido run: the block scene (seed figs. 10-13), its frames in index.html.
 async function runPage(browser) {
   const dir = join(out, 'run');
-  run(['run', 'data/scenes/seed_fig10_block.json', '--steps', '400', '--out', dir]);
+  run(['run', 'data/scenes/seed_fig10_12_block_121.json', '--steps', '400', '--out', dir]);
   const { page, report } = await open(browser, join(dir, 'index.html'));
   await viewerReady(page);
   noErrors(report, 'run page');

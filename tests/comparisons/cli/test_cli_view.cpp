@@ -55,7 +55,7 @@ TEST(CliView, BadFileIsOneLineExitTwoNothingWritten) {
 
 TEST(CliView, RunWritesIndexHtmlBesideItsFrames) {
   const auto dir = testing::temp_dir("view-run");
-  const auto r = run_cli("run " + quoted(std::string(TECIDO_SOURCE_DIR) + "/data/scenes/seed_fig10_block.json") +
+  const auto r = run_cli("run " + quoted(std::string(TECIDO_SOURCE_DIR) + "/data/scenes/seed_fig10_12_block_121.json") +
                          " --steps 20 --out " + quoted((dir / "out").string()));
   ASSERT_EQ(r.code, 0) << r.err;
   for (const char* f : {"index.html", "index.data.js"}) EXPECT_TRUE(fs::exists(dir / "out" / f)) << f;

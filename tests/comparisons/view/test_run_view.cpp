@@ -39,7 +39,7 @@ std::vector<float> floats(const std::string& b64) {
 // obstacle and self-contact pairs are core's detectors' answers on the recorded positions, checked
 // against the brute-force self-collision reference and springs_through_obstacle.
 TEST(RunView, FramesHoldThePositionsAndTheDetectorsAnswers) {
-  const Scene scene = io::load_scene(std::string(TECIDO_SOURCE_DIR) + "/data/scenes/seed_fig10_block.json");
+  const Scene scene = io::load_scene(std::string(TECIDO_SOURCE_DIR) + "/data/scenes/seed_fig10_12_block_121.json");
   Simulation sim(scene);
   RunView view(scene);
   std::vector<std::vector<Vec3>> xs;
@@ -85,7 +85,7 @@ TEST(RunView, FramesHoldThePositionsAndTheDetectorsAnswers) {
 }
 
 TEST(RunView, NonFiniteFramesAreSkipped) {
-  const Scene scene = io::load_scene(std::string(TECIDO_SOURCE_DIR) + "/data/scenes/seed_fig10_block.json");
+  const Scene scene = io::load_scene(std::string(TECIDO_SOURCE_DIR) + "/data/scenes/seed_fig10_12_block_121.json");
   RunView view(scene);
   std::vector<Vec3> x = scene.particles.x;
   x[3].x() = std::numeric_limits<double>::quiet_NaN();
