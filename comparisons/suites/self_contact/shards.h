@@ -26,8 +26,7 @@ Options options_from_json(const io::JsonReader& rd, const io::Json& j, const std
 /// The shard file of `plan` with the results of its cases `indices` (ascending).
 std::string shard_json(const Plan& plan, const std::vector<std::size_t>& indices, const std::vector<io::Json>& results);
 
-
-// (is_experiment_shard: comparisons/suites/experiment_shard.h)
+/// (The shard format, its reading and the case checks: comparisons/suites/experiment_shard.h.)
 
 /// Reads and checks the shard files; returns the assembled outputs (plots written to out_dir).
 /// A non-empty `seed_table` replaces the seed's tables' path the shards recorded.
