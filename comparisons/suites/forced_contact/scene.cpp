@@ -132,8 +132,8 @@ std::string scene_note(const ForcedScene& f) {
       "step (half a particle's weight, the self-contact scene's choice); the impulse response (history-based) detects "
       "continuously, up to {} rounds per step. Why grips: every obstacle of this engine pushes every particle, so a "
       "body pushing one layer pushes the other ahead of it and never forces them through each other; only something "
-      "holding each layer (the limbs' grip in the seed's fig. 16) can. Every number here was chosen before any "
-      "response was compared; the scene was run only with no response, to check that it forces an intersection.\n",
+      "holding each layer (the limbs' grip in the seed's fig. 16) can. Every number here was chosen, and committed "
+      "with the claims' rules, before the first run of any response (git history shows the order).\n",
       f.rows, f.cols, f.spacing, f.total_mass, f.total_mass * f.spacing * f.spacing / ((f.rows - 1) * (f.cols - 1) * f.spacing * f.spacing),
       f.stiffness, f.air_drag, f.dt, list(f.bar_rows), f.bar_radius, f.bar_height, quarter, f.bar_radius,
       f.bar_rows.front() - 1, f.bar_radius, f.offset, f.seed, f.settle, list(f.front_rows), list(f.grip_cols),

@@ -1,7 +1,7 @@
 #pragma once
 /// The forced-contact scene, generated in code (every parameter is a member of ForcedScene, each
-/// written in the scene note of experiment.md and in experiment.json, fixed before any response
-/// was compared).
+/// written in the scene note of experiment.md and in experiment.json, fixed and committed before
+/// the first run of any response).
 ///
 /// A cloth hangs folded over a bar: its four middle rows are fixed on a half-circle (the bar) and
 /// the two halves hang down as a front layer (z = -r) and a back layer (z = +r). After the
