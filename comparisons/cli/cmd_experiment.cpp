@@ -9,6 +9,12 @@
 // (with --calibrate: DIR/calibration.json and calibration.md). With --shard i/n only the cases whose
 // index % n == i, written as DIR/experiment.json (or calibration.json) marked as a shard;
 // `tecido merge` joins the shards.
+//
+// tecido experiment forced-contact [--out DIR] [--threads N] [--quick] [--seeds N] [--shard i/n]
+//                                  [--max-work W] [--frames]
+// The seed's argument for GIA (fig. 16) as an experiment (comparisons/suites/forced_contact/
+// experiment.h): the same outputs, shards and merge; --frames also writes run 0 of every
+// (response, hold) as OBJ frames under DIR/frames/. The self-contact options are refused.
 #include "comparisons/cli/commands.h"
 #include "comparisons/cli/option_checks.h"
 #include "comparisons/cli/shard_option.h"
@@ -18,6 +24,8 @@
 #include "comparisons/io/output_dir.h"
 #include "comparisons/io/scene_json.h"
 #include "comparisons/io/work_limit.h"
+#include "comparisons/suites/forced_contact/frames.h"
+#include "comparisons/suites/forced_contact/shards.h"
 #include "comparisons/suites/self_contact/experiment.h"
 #include "comparisons/suites/self_contact/shards.h"
 #include "comparisons/suites/suite_shard.h"
@@ -36,6 +44,7 @@ namespace tecido::cli {
 namespace {
 
 namespace sc = suites::self_contact;
+namespace fc = suites::forced_contact;
 
 /// "0-7,12,20-23" -> indices, each in [0, count): bounds are checked before a range is expanded.
 std::vector<int> parse_runs(const std::string& list, int count) {
@@ -64,18 +73,17 @@ std::vector<int> parse_runs(const std::string& list, int count) {
 }
 
 struct Opts {
-  std::string name, out = "out/self-contact", runs, scene, seed_table, calibration, elasticity_as, shard, detector;
+  std::string name, out, runs, scene, seed_table, calibration, elasticity_as, shard, detector;
   int threads = 0, seeds = 0;
   double max_work = io::kDefaultMaxWork;
   double strength = std::nan("");  // not given
-  bool quick = false, calibrate = false, no_sensitivity = false;
+  bool quick = false, calibrate = false, no_sensitivity = false, frames = false;
 };
 
 /// The subcommand's options, all in one place.
 void define_options(CLI::App* sub, Opts& o) {
-  sub->add_option("name", o.name, "Experiment name: self-contact")->required();
-  sub->add_option("--out", o.out, "Output directory (experiment.json and .md; calibration.json and .md)")
-      ->capture_default_str()
+  sub->add_option("name", o.name, "Experiment name: self-contact | forced-contact")->required();
+  sub->add_option("--out", o.out, "Output directory (experiment.json and .md; calibration.json and .md); default out/NAME")
       ->check(non_empty());
   sub->add_option("--threads", o.threads, "Worker threads (0 = all cores); results do not depend on it")
       ->check(integer_in(0, io::kMaxThreads));
@@ -101,6 +109,7 @@ void define_options(CLI::App* sub, Opts& o) {
       ->check(one_of({"stiffness", "restitution"}));
   sub->add_option("--shard", o.shard, "Only the cases whose index % n == i, e.g. 0/8; join the shards with `tecido merge`")
       ->check(shard_spec());
+  sub->add_flag("--frames", o.frames, "forced-contact: also write run 0 of every (response, hold) as OBJ frames in DIR/frames");
   sub->add_option("--max-work", o.max_work, "Largest work of one run, steps x elements per step (see tecido run)")
       ->capture_default_str()
       ->check(number_in(1.0, false, io::kMaxWorkCeiling));
@@ -116,8 +125,12 @@ void check_experiment_work(const sc::Options& opt, double max_work) {
   if (!too_much.empty()) throw io::InputError(opt.scene_path, "", "a run of the experiment: " + too_much);
 }
 
+int threads_of(const Opts& o) {
+  return o.threads > 0 ? o.threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+}
+
 sc::Options to_options(const Opts& o) {
-  if (o.name != "self-contact") throw io::UsageError("unknown experiment \"" + o.name + "\" (known: self-contact)");
+  if (o.frames) throw io::UsageError("--frames is an option of forced-contact, not self-contact");
   const std::string data = std::string(TECIDO_SOURCE_DIR) + "/data";
   sc::Options opt;
   opt.scene_path = o.scene.empty() ? data + "/scenes/seed_fig21_self_contact.json" : o.scene;
@@ -132,14 +145,65 @@ sc::Options to_options(const Opts& o) {
   opt.sensitivity = !o.no_sensitivity;
   opt.elasticity_as = o.elasticity_as;
   if (!std::isnan(o.strength)) opt.strength = o.strength;
-  opt.threads = o.threads > 0 ? o.threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  opt.threads = threads_of(o);
   if (!o.shard.empty()) std::tie(opt.shard_index, opt.shard_count) = parse_shard(o.shard);
   opt.progress = true;
   opt.out_dir = o.out;
   return opt;
 }
 
-int run(const Opts& o) {
+/// forced-contact: the self-contact-only options are refused (exit 2), the shared ones read.
+fc::Options forced_options(const Opts& o, CLI::App* sub) {
+  for (const char* name : {"--detector", "--runs", "--calibrate", "--calibration", "--no-sensitivity", "--scene",
+                           "--seed-table", "--strength", "--elasticity-as"})
+    if (sub->count(name) > 0) throw io::UsageError(std::string(name) + " is an option of self-contact, not forced-contact");
+  fc::Options opt;
+  opt.quick = o.quick;
+  opt.seeds = o.seeds;
+  opt.threads = threads_of(o);
+  if (!o.shard.empty()) std::tie(opt.shard_index, opt.shard_count) = parse_shard(o.shard);
+  opt.progress = true;
+  opt.out_dir = o.out;
+  return opt;
+}
+
+/// Every run of forced-contact must fit in the work limit: the longest hold.
+void check_forced_work(const fc::Plan& plan, double max_work) {
+  const fc::Settings& s = plan.settings;
+  const Scene longest = fc::forced_scene(plan.scene, SelfCollisionResponse::None, s.holds.back(), s.after_release, 0);
+  const std::string too_much = io::work_limit_problem(longest, longest.steps, max_work);
+  if (!too_much.empty()) throw io::UsageError("--max-work: a run of forced-contact: " + too_much);
+}
+
+int run_forced(const Opts& o, CLI::App* sub) {
+  const fc::Options opt = forced_options(o, sub);
+  const auto plan = std::make_shared<const fc::Plan>(fc::make_plan(opt));
+  check_forced_work(*plan, o.max_work);
+  io::check_output_dir(o.out);
+  const io::OutputDirLock out_lock(o.out);
+  const suites::Sweep sweep = fc::make_sweep(plan);
+  const auto indices = suites::shard_indices(sweep.cases, opt.shard_index, opt.shard_count);
+  const auto t0 = std::chrono::steady_clock::now();
+  const auto results = suites::run_sweep_cases(sweep, indices, opt.threads, "forced-contact", opt.progress);
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  std::cout << "forced-contact: " << indices.size() << " cases in " << seconds << " s on " << opt.threads << " threads; ";
+  if (!o.shard.empty()) {
+    io::write_file_atomic(o.out + "/experiment.json", fc::shard_json(*plan, indices, results));
+    std::cout << "wrote " << o.out << "/experiment.json (shard " << o.shard << ")\n";
+  } else {
+    const fc::Outputs out = fc::assemble(*plan, results);
+    for (const auto& [name, text] : out.files) io::write_file_atomic(o.out + "/" + name, text);
+    std::cout << out.summary << "; wrote " << o.out << "/experiment.json and .md\n";
+  }
+  if (o.frames) std::cout << "forced-contact: " << fc::write_frames(*plan, o.out) << " frames in " << o.out << "/frames\n";
+  return 0;
+}
+
+int run(Opts o, CLI::App* sub) {
+  if (o.name != "self-contact" && o.name != "forced-contact")
+    throw io::UsageError("unknown experiment \"" + o.name + "\" (known: self-contact, forced-contact)");
+  if (o.out.empty()) o.out = "out/" + o.name;
+  if (o.name == "forced-contact") return run_forced(o, sub);
   const sc::Options opt = to_options(o);
   check_experiment_work(opt, o.max_work);
   io::check_output_dir(o.out);
@@ -165,9 +229,10 @@ int run(const Opts& o) {
 
 Command add_experiment(CLI::App& app) {
   auto o = std::make_shared<Opts>();
-  CLI::App* sub = app.add_subcommand("experiment", "Run one of the seed's experiments: self-contact (tables 1-3, as an ensemble)");
+  CLI::App* sub = app.add_subcommand(
+      "experiment", "Run one of the seed's experiments: self-contact (tables 1-3, as an ensemble) or forced-contact (fig. 16)");
   define_options(sub, *o);
-  return [o]() { return run(*o); };
+  return [o, sub]() { return run(*o, sub); };
 }
 
 }  // namespace

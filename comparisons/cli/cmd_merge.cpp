@@ -1,4 +1,6 @@
 // tecido merge DIR... --out DIR2 [--seed-table FILE]
+//  (DIR/experiment.json of `tecido experiment forced-contact --shard i/n`: the same, its experiment
+//  named in the shard, comparisons/suites/forced_contact/shards.h)
 // Joins shards into the result of the unsharded run. Each DIR holds one shard (or is its file):
 //  - DIR/experiment.json of `tecido experiment self-contact --shard i/n`: writes DIR2/experiment.json
 //    and DIR2/experiment.md, byte for byte what the unsharded run writes (comparisons/suites/self_contact/shards.h);
@@ -15,6 +17,7 @@
 #include "comparisons/io/input_error.h"
 #include "comparisons/io/json_reader.h"
 #include "comparisons/suites/report.h"
+#include "comparisons/suites/forced_contact/shards.h"
 #include "comparisons/suites/self_contact/shards.h"
 #include "comparisons/suites/suite_shard.h"
 
@@ -39,12 +42,24 @@ std::string shard_file(const std::string& d) {
   return (std::filesystem::path(d) / "experiment.json").string();
 }
 
-int merge_experiment(const std::vector<std::string>& files, const std::string& out, const std::string& seed_table) {
-  const auto m = suites::self_contact::merge_shards(files, out, seed_table);
+template <class Merged>
+int write_merged(const Merged& m, const std::string& out) {
   for (const auto& [name, text] : m.outputs.files) io::write_file_atomic(out + "/" + name, text);
   std::cout << "merge: " << m.shards << " shards, " << m.cases << " cases; " << m.outputs.summary << "; wrote " << out
             << "/" << m.outputs.files.front().first << " and .md\n";
   return 0;
+}
+
+/// The experiment the first shard names decides the merge (the others must be of the same one).
+int merge_experiment(const std::vector<std::string>& files, const std::string& out, const std::string& seed_table) {
+  std::error_code ec;
+  const bool forced = std::filesystem::is_regular_file(files.front(), ec) &&
+                      suites::shard_experiment(io::read_json_file(files.front())) == "forced-contact";
+  if (forced) {
+    if (!seed_table.empty()) throw io::UsageError("--seed-table is for self-contact shards, not forced-contact");
+    return write_merged(suites::forced_contact::merge_shards(files, out), out);
+  }
+  return write_merged(suites::self_contact::merge_shards(files, out, seed_table), out);
 }
 
 int merge_suites(const std::vector<std::string>& files, const std::string& out) {
@@ -99,7 +114,7 @@ Command add_merge(CLI::App& app) {
   };
   auto o = std::make_shared<Opts>();
   CLI::App* sub = app.add_subcommand(
-      "merge", "Join the shards of `experiment self-contact --shard i/n` or `suite NAME... --shard i/n` into one result");
+      "merge", "Join the shards of `experiment self-contact|forced-contact --shard i/n` or `suite NAME... --shard i/n` into one result");
   sub->add_option("dirs", o->dirs, "The shards' output directories (or their experiment.json / shard.json files)")
       ->required()
       ->check(non_empty());

@@ -10,6 +10,7 @@
 /// rebuilds the plan from the options (so the scene, the seed's tables and the calibration record
 /// are read again from the recorded paths) and assembles: the unsharded run's files, apart from
 /// wall-clock fields. Any violation is an io::InputError (one line; the CLI exits 2).
+#include "comparisons/suites/experiment_shard.h"
 #include "comparisons/suites/self_contact/experiment.h"
 
 #include <string>
@@ -25,8 +26,7 @@ Options options_from_json(const io::JsonReader& rd, const io::Json& j, const std
 /// The shard file of `plan` with the results of its cases `indices` (ascending).
 std::string shard_json(const Plan& plan, const std::vector<std::size_t>& indices, const std::vector<io::Json>& results);
 
-/// True when `doc` is an experiment shard.
-bool is_experiment_shard(const io::Json& doc);
+/// (The shard format, its reading and the case checks: comparisons/suites/experiment_shard.h.)
 
 /// Reads and checks the shard files; returns the assembled outputs (plots written to out_dir).
 /// A non-empty `seed_table` replaces the seed's tables' path the shards recorded.
