@@ -78,4 +78,7 @@ struct SuiteEntry {
 /// Every registered suite in the order `all` runs them.
 const std::vector<SuiteEntry>& suite_registry();
 
+/// Runs one suite: its result, named after the entry, with its wall time in `seconds`.
+SuiteResult run_suite(const SuiteEntry& entry, const SuiteContext& ctx);
+
 }  // namespace tecido::suites

@@ -19,7 +19,8 @@ class PluginEngine final : public OutsideEngine {
 
   const std::string& name() const override { return name_; }
   std::string door() const override { return library_->door(); }
-  std::string door_option() const override { return plugin_option(library_->path()); }
+  /// "" for an in-process table: no option of the command line brings it back.
+  std::string door_option() const override { return library_->loaded() ? plugin_option(library_->path()) : ""; }
   bool is_process() const override { return false; }
   Capabilities capabilities() const override;
   std::optional<double> claimed_order() const override;

@@ -13,6 +13,15 @@ namespace tecido::outside {
 namespace {
 
 std::string door_of(const std::string& path) { return "plug-in " + path; }
+std::string in_process_door(const std::string& label) { return "in-process " + label; }
+
+void check_abi_version(const std::string& door, const tecido_plugin& table) {
+  if (table.abi_version == TECIDO_PLUGIN_ABI_VERSION) return;
+  throw EngineError(door, TECIDO_PLUGIN_ENTRY_SYMBOL,
+                    "ABI version mismatch: the plug-in was built for ABI " + std::to_string(table.abi_version) +
+                        ", this tecido speaks ABI " + std::to_string(TECIDO_PLUGIN_ABI_VERSION) +
+                        " (rebuild it against this include/tecido/plugin.h)");
+}
 
 /// The file a loaded library came from, as an absolute path, so that a report names it wherever
 /// it is read from: a path with a '/' made absolute against the working directory; a bare name
@@ -29,10 +38,8 @@ std::string loaded_file(const std::string& path, void* handle) {
   return ec ? file : abs.lexically_normal().string();
 }
 
-}  // namespace
-
-void check_plugin_table(const std::string& path, const tecido_plugin& t) {
-  const std::string door = door_of(path);
+/// check_plugin_table's checks, errors naming `door`.
+void check_table(const std::string& door, const tecido_plugin& t) {
   if (t.engine_count == 0 || t.engines == nullptr) throw EngineError(door, TECIDO_PLUGIN_ENTRY_SYMBOL, "names no engine");
   if (t.engine_count > 1000) throw EngineError(door, TECIDO_PLUGIN_ENTRY_SYMBOL, "engine_count is absurd (over 1000)");
   std::set<std::string> seen;
@@ -52,6 +59,10 @@ void check_plugin_table(const std::string& path, const tecido_plugin& t) {
       throw EngineError(door, where, "engine \"" + name + "\" answers nothing (every function pointer is NULL)");
   }
 }
+
+}  // namespace
+
+void check_plugin_table(const std::string& path, const tecido_plugin& t) { check_table(door_of(path), t); }
 
 bool valid_engine_name(const std::string& name) {
   if (name.empty() || name.size() > 64 || name[0] == '-') return false;
@@ -86,14 +97,8 @@ std::shared_ptr<PluginLibrary> PluginLibrary::load(const std::string& path) {
     dlclose(handle);
     throw EngineError(door, TECIDO_PLUGIN_ENTRY_SYMBOL, "returned NULL");
   }
-  if (table->abi_version != TECIDO_PLUGIN_ABI_VERSION) {
-    const std::string v = std::to_string(table->abi_version);
-    dlclose(handle);
-    throw EngineError(door, TECIDO_PLUGIN_ENTRY_SYMBOL,
-                      "ABI version mismatch: the plug-in was built for ABI " + v + ", this tecido speaks ABI " +
-                          std::to_string(TECIDO_PLUGIN_ABI_VERSION) + " (rebuild it against this include/tecido/plugin.h)");
-  }
   try {
+    check_abi_version(door, *table);
     check_plugin_table(path, *table);
   } catch (...) {
     dlclose(handle);
@@ -102,12 +107,20 @@ std::shared_ptr<PluginLibrary> PluginLibrary::load(const std::string& path) {
   return std::shared_ptr<PluginLibrary>(new PluginLibrary(loaded_file(path, handle), handle, table));
 }
 
+std::shared_ptr<PluginLibrary> PluginLibrary::in_process(const tecido_plugin* table, const std::string& label) {
+  const std::string door = in_process_door(label);
+  if (!table) throw EngineError(door, "table", "is NULL");
+  check_abi_version(door, *table);
+  check_table(door, *table);
+  return std::shared_ptr<PluginLibrary>(new PluginLibrary(label, nullptr, table));
+}
+
 PluginLibrary::~PluginLibrary() {
   if (handle_) dlclose(handle_);
 }
 
 std::string PluginLibrary::door() const {
-  return door_of(path_) + " (ABI " + std::to_string(table_->abi_version) + ")";
+  return (loaded() ? door_of(path_) : in_process_door(path_)) + " (ABI " + std::to_string(table_->abi_version) + ")";
 }
 
 }  // namespace tecido::outside

@@ -16,11 +16,18 @@ class PluginLibrary {
  public:
   /// Loads `path` (a path with a '/' is opened as given; a bare name is searched as dlopen does).
   static std::shared_ptr<PluginLibrary> load(const std::string& path);
+  /// A table of this very process (the harness library registers its caller's engines so,
+  /// include/tecido/harness.h): checked as load() checks a library's table, its version included;
+  /// nothing is loaded. `label` names it in errors and reports ("in-process LABEL (ABI N)"). The
+  /// table must outlive the PluginLibrary and its engines.
+  static std::shared_ptr<PluginLibrary> in_process(const tecido_plugin* table, const std::string& label);
   ~PluginLibrary();
   PluginLibrary(const PluginLibrary&) = delete;
   PluginLibrary& operator=(const PluginLibrary&) = delete;
 
-  /// The loaded file's absolute path (as given when it could not be found out).
+  /// Whether the table came from a loaded file (false: in_process()).
+  bool loaded() const { return handle_ != nullptr; }
+  /// The loaded file's absolute path (as given when it could not be found out); in_process(): the label.
   const std::string& path() const { return path_; }
   const tecido_plugin& table() const { return *table_; }
   /// "plug-in PATH (ABI N)", PATH absolute: what a report names.

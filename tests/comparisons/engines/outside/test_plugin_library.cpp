@@ -1,6 +1,7 @@
 // Loading plug-ins: the example's table as written in examples/plugin; every way a library can fail
 // to be a plug-in is one EngineError naming the path and what failed.
 #include "comparisons/engines/outside/engine_error.h"
+#include "comparisons/engines/outside/plugin_engine.h"
 #include "comparisons/engines/outside/plugin_library.h"
 #include "tests/support/outside_fixtures.h"
 
@@ -77,6 +78,39 @@ TEST(PluginLibrary, EngineNames) {
   EXPECT_FALSE(valid_engine_name("a,b"));  // would break --engines lists
   EXPECT_FALSE(valid_engine_name("a b"));
   EXPECT_FALSE(valid_engine_name(std::string(65, 'a')));
+}
+
+}  // namespace
+}  // namespace tecido::outside
+
+namespace tecido::outside {
+namespace {
+
+int answers_no(const double*, const double*) { return 0; }
+
+// The harness library (include/tecido/harness.h) registers a caller's tables in-process: checked
+// as a loaded table is, named "in-process LABEL", with no option of the command line to replay it.
+TEST(PluginLibrary, AnInProcessTableIsCheckedAndNamedAsSuch) {
+  tecido_engine e{};
+  e.name = "mine";
+  e.tri_tri = &answers_no;
+  tecido_plugin table{TECIDO_PLUGIN_ABI_VERSION, 1, &e};
+  const auto lib = PluginLibrary::in_process(&table, "test table");
+  EXPECT_FALSE(lib->loaded());
+  EXPECT_EQ(lib->door(), "in-process test table (ABI 1)");
+  EXPECT_EQ(plugin_engines(lib).front()->door_option(), "");
+
+  e.name = "not a name";
+  try {
+    PluginLibrary::in_process(&table, "test table");
+    ADD_FAILURE() << "a bad engine name was accepted";
+  } catch (const EngineError& err) {
+    EXPECT_NE(std::string(err.what()).find("in-process test table"), std::string::npos) << err.what();
+    EXPECT_NE(std::string(err.what()).find("not 1-64 of"), std::string::npos) << err.what();
+  }
+  e.name = "mine";
+  table.abi_version = TECIDO_PLUGIN_ABI_VERSION + 1;
+  EXPECT_THROW(PluginLibrary::in_process(&table, "test table"), EngineError);
 }
 
 }  // namespace
