@@ -15,15 +15,17 @@ Summary summarize(const std::vector<double>& xs) {
     return s;
   }
   double sum = 0.0;
-  for (double x : xs) sum += x;
-  s.mean = sum / static_cast<double>(s.n);
+  bool constant = true;
+  for (double x : xs) sum += x, constant = constant && x == xs.front();
+  s.mean = constant ? xs.front() : sum / static_cast<double>(s.n);  // equal values: exactly that value, sd 0
   if (s.n < 2) {
     s.sd = s.se = kNaN;
     s.ci95 = s.pi95 = kNoInterval;
     return s;
   }
   double ss = 0.0;
-  for (double x : xs) ss += (x - s.mean) * (x - s.mean);
+  if (!constant)
+    for (double x : xs) ss += (x - s.mean) * (x - s.mean);
   const double n = static_cast<double>(s.n);
   s.sd = std::sqrt(ss / (n - 1.0));
   s.se = s.sd / std::sqrt(n);

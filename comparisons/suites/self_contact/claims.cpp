@@ -424,6 +424,28 @@ const char* verdict_name(Verdict v) {
   return "inconclusive";
 }
 
+Verdict direction_verdict(const Interval& ci, double seed_value, int side) {
+  if (!ci.defined()) return Verdict::Inconclusive;
+  if (side < 0 ? ci.below(0.0) : ci.above(0.0)) return Verdict::Reproduced;
+  if (side < 0 ? ci.above(0.0) : ci.below(0.0)) return Verdict::NotReproduced;
+  if (!std::isnan(seed_value) && !ci.contains(seed_value)) return Verdict::NotReproduced;
+  return Verdict::Inconclusive;
+}
+
+Verdict negligible_verdict(const Interval& ci, double margin) {
+  if (!ci.defined()) return Verdict::Inconclusive;
+  if (ci.lo > -margin && ci.hi < margin) return Verdict::Reproduced;
+  if (ci.hi < -margin || ci.lo > margin) return Verdict::NotReproduced;
+  return Verdict::Inconclusive;
+}
+
+Verdict threshold_verdict(const Interval& ci, double threshold) {
+  if (!ci.defined()) return Verdict::Inconclusive;
+  if (ci.above(threshold)) return Verdict::Reproduced;
+  if (ci.below(threshold)) return Verdict::NotReproduced;
+  return Verdict::Inconclusive;
+}
+
 Verdict verdict_from(double p_support_holm, double p_refute_holm, double alpha) {
   if (p_support_holm < alpha) return Verdict::Reproduced;
   if (p_refute_holm < alpha) return Verdict::NotReproduced;

@@ -78,6 +78,15 @@ struct Claim {
   HeldOut held_out;           ///< detector claims: without the calibration's cells
 };
 
+/// Interval rules, for experiments that decide a claim on one 95% interval without a family (the
+/// forced-contact experiment): direction (wholly on the claimed side of 0 -> reproduced; wholly on
+/// the other side, or containing 0 but not the seed's value -> not reproduced), negligible (inside
+/// +-margin: equivalence at 2.5% per side -> reproduced; wholly outside -> not reproduced) and
+/// threshold (above -> reproduced; below -> not reproduced); inconclusive otherwise or undefined.
+Verdict direction_verdict(const Interval& ci, double seed_value, int side);
+Verdict negligible_verdict(const Interval& ci, double margin);
+Verdict threshold_verdict(const Interval& ci, double threshold);
+
 /// The verdict from Holm-adjusted p-values (see the file comment).
 Verdict verdict_from(double p_support_holm, double p_refute_holm, double alpha);
 /// Holm within each family of `claims`; sets the adjusted p-values and the verdicts.

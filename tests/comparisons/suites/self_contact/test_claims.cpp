@@ -53,6 +53,21 @@ CostHalf lighter() {
   return h;
 }
 
+TEST(ClaimRules, IntervalRulesForSingleIntervals) {
+  EXPECT_EQ(direction_verdict({-0.3, -0.1}, -0.2, -1), Verdict::Reproduced);
+  EXPECT_EQ(direction_verdict({0.1, 0.3}, -0.2, -1), Verdict::NotReproduced);
+  EXPECT_EQ(direction_verdict({-0.05, 0.05}, -0.2, -1), Verdict::NotReproduced);  // rules out the seed's -20%
+  EXPECT_EQ(direction_verdict({-0.3, 0.05}, -0.2, -1), Verdict::Inconclusive);
+  EXPECT_EQ(direction_verdict({0.01, 0.2}, 0.07, +1), Verdict::Reproduced);
+  EXPECT_EQ(direction_verdict({kNaN, kNaN}, 0.07, +1), Verdict::Inconclusive);
+  EXPECT_EQ(negligible_verdict({-0.04, 0.06}, 0.1), Verdict::Reproduced);
+  EXPECT_EQ(negligible_verdict({0.12, 0.3}, 0.1), Verdict::NotReproduced);
+  EXPECT_EQ(negligible_verdict({0.05, 0.3}, 0.1), Verdict::Inconclusive);
+  EXPECT_EQ(threshold_verdict({2.5, 3.0}, 2.0), Verdict::Reproduced);
+  EXPECT_EQ(threshold_verdict({0.5, 1.5}, 2.0), Verdict::NotReproduced);
+  EXPECT_EQ(threshold_verdict({1.5, 2.5}, 2.0), Verdict::Inconclusive);
+}
+
 TEST(ClaimRules, VerdictFromHolmAdjustedPValues) {
   EXPECT_EQ(verdict_from(0.01, 0.9, 0.05), Verdict::Reproduced);
   EXPECT_EQ(verdict_from(0.2, 0.001, 0.05), Verdict::NotReproduced);
@@ -108,13 +123,13 @@ TEST(Ensemble, RelativeEffectIsThePairedMeanOverSeeds) {
 }
 
 TEST(Claims, PlantedEffectsGiveTheirVerdicts) {
-  // Mode 1 changes nothing, mode 2 raises by 15%, mode 3 lowers by 20%; 2% noise; 12 seeds.
-  const double f[4] = {1.0, 1.0, 1.15, 0.8};
+  // Mode 1 changes nothing, mode 2 raises by 15%, mode 3 lowers by 17%; 2% noise; 12 seeds.
+  const double f[4] = {1.0, 1.0, 1.15, 0.83};
   const Ensemble e = planted(12, f, 0.02, 1);
   const Settings s;
   const auto cs = detector_claims(e, 0, seed_tables(), s, no_fit(), lighter());
   EXPECT_EQ(find(cs, "mode3-better").verdict, Verdict::Reproduced);
-  EXPECT_NEAR(find(cs, "mode3-better").observed, -0.2, 0.01);
+  EXPECT_NEAR(find(cs, "mode3-better").observed, -0.17, 0.01);
   EXPECT_EQ(find(cs, "mode2-worse").verdict, Verdict::Reproduced);
   EXPECT_EQ(find(cs, "mode1-marginal").verdict, Verdict::Reproduced);
   EXPECT_EQ(find(cs, "mode3-every-step").verdict, Verdict::Reproduced);
@@ -123,8 +138,8 @@ TEST(Claims, PlantedEffectsGiveTheirVerdicts) {
   EXPECT_EQ(find(cs, "step-level").verdict, Verdict::Reproduced);
   // No wind dependence planted: the 0.1 N contrast is 0, its interval narrow, the seed's +8% ruled out.
   EXPECT_EQ(find(cs, "mode3-wind").verdict, Verdict::NotReproduced);
-  // -20% planted against the seed's -16.2%: within the +-10% margin, the seed's spread over its cells
-  // counted in the standard error, the two one-sided tests pass.
+  // -17% planted against the seed's -16.2%: within the +-10% margin, the seed's spread over its cells
+  // counted in the standard error, the two one-sided tests pass, also after Holm.
   const Claim& size = find(cs, "mode3-size");
   EXPECT_EQ(size.verdict, Verdict::Reproduced) << size.p_support << " " << size.p_support_holm;
   EXPECT_DOUBLE_EQ(size.margin, 0.10);
@@ -133,7 +148,7 @@ TEST(Claims, PlantedEffectsGiveTheirVerdicts) {
   const double big[4] = {1.0, 1.0, 1.15, 0.5};
   EXPECT_EQ(find(detector_claims(planted(12, big, 0.02, 6), 0, seed_tables(), s, no_fit(), lighter()), "mode3-size").verdict,
             Verdict::NotReproduced);
-  // -20% with +-60% noise over 4 seeds: an interval that contains the seed's value is no longer
+  // -17% with +-60% noise over 4 seeds: an interval that contains the seed's value is no longer
   // agreement; it is inconclusive.
   EXPECT_EQ(find(detector_claims(planted(4, f, 1.2, 7), 0, seed_tables(), s, no_fit(), lighter()), "mode3-size").verdict,
             Verdict::Inconclusive);
@@ -180,11 +195,15 @@ TEST(Claims, CellsMatchFailsBothWays) {
   }
   auto fit = no_fit();
   for (int c = 0; c < 6; ++c) fit[c] = true;  // left out of the judgement
-  // 3 of 66 outside: the rate is shown inside [0.01, 0.14] (exact TOST p 0.0287, test_stats).
+  // 3 of 66 outside: alone the rate is shown inside [0.01, 0.14] (exact TOST p 0.0287, test_stats);
+  // Holm-adjusted among the detector's ten claims (none of which holds in this planted ensemble) it
+  // is not: 66 cells are few for an equivalence of rates.
   const Claim good = find(detector_claims(e, 0, three_out, Settings{}, fit, lighter()), "cells-match");
   EXPECT_EQ(good.n, 66u);
   EXPECT_NEAR(good.p_support, 0.0286977, 1e-6);
-  EXPECT_EQ(good.verdict, Verdict::Reproduced);
+  EXPECT_GT(good.p_support_holm, 0.05);
+  EXPECT_EQ(good.verdict, Verdict::Inconclusive);
+  EXPECT_EQ(verdict_from(good.p_support, good.p_refute, 0.05), Verdict::Reproduced);
   // 0 of 66: the wider our intervals, the fewer outside, and that no longer passes: it cannot be
   // told from 5% at n = 66 (two-sided p 0.080) nor shown near it: inconclusive.
   const Claim none_out = find(detector_claims(e, 0, centre, Settings{}, fit, lighter()), "cells-match");
