@@ -1,6 +1,7 @@
 // tecido experiment self-contact [--out DIR] [--threads N] [--quick] [--seeds N]
 //                                [--detector core|core-mt|core-rotation[,...]] [--runs LIST]
-//                                [--calibrate] [--calibration FILE] [--no-sensitivity]
+//                                [--calibrate] [--calibration FILE] [--sensitivity none|strength|all]
+//                                [--no-sensitivity]
 //                                [--scene FILE] [--seed-table FILE]
 //                                [--elasticity-as stiffness|restitution] [--strength F] [--shard i/n]
 //                                [--max-work W]
@@ -74,6 +75,7 @@ std::vector<int> parse_runs(const std::string& list, int count) {
 
 struct Opts {
   std::string name, out, runs, scene, seed_table, calibration, elasticity_as, shard, detector;
+  std::string sensitivity = "strength";
   int threads = 0, seeds = 0;
   double max_work = io::kDefaultMaxWork;
   double strength = std::nan("");  // not given
@@ -99,7 +101,12 @@ void define_options(CLI::App* sub, Opts& o) {
   sub->add_option("--calibration", o.calibration,
                   "Calibration record (default data/seed_tables/self_contact_calibration.json)")
       ->check(non_empty());
-  sub->add_flag("--no-sensitivity", o.no_sensitivity, "Skip the readings that vary the seed's open choices");
+  sub->add_option("--sensitivity", o.sensitivity,
+                  "Readings beside the baseline: none, strength (the push strengths tried, 0.4x and 2x) or all "
+                  "(every open choice, 11 readings: long)")
+      ->capture_default_str()
+      ->check(one_of({"none", "strength", "all"}));
+  sub->add_flag("--no-sensitivity", o.no_sensitivity, "The same as --sensitivity none");
   sub->add_option("--scene", o.scene, "Base scene (default data/scenes/seed_fig21_self_contact.json)")->check(non_empty());
   sub->add_option("--seed-table", o.seed_table, "The seed's tables (default data/seed_tables/self_contact_share.json)")
       ->check(non_empty());
@@ -142,7 +149,7 @@ sc::Options to_options(const Opts& o) {
     opt.detectors = parse_engine_list(o.detector, {"core", "core-mt", "core-rotation"}, "self-contact", "--detector");
   if (!o.runs.empty()) opt.cells = parse_runs(o.runs, sc::CellGrid::kCells);
   opt.calibrate = o.calibrate;
-  opt.sensitivity = !o.no_sensitivity;
+  opt.sensitivity = o.no_sensitivity ? "none" : o.sensitivity;
   opt.elasticity_as = o.elasticity_as;
   if (!std::isnan(o.strength)) opt.strength = o.strength;
   opt.threads = threads_of(o);
@@ -154,7 +161,8 @@ sc::Options to_options(const Opts& o) {
 
 /// forced-contact: the self-contact-only options are refused (exit 2), the shared ones read.
 fc::Options forced_options(const Opts& o, CLI::App* sub) {
-  for (const char* name : {"--detector", "--runs", "--calibrate", "--calibration", "--no-sensitivity", "--scene",
+  for (const char* name : {"--detector", "--runs", "--calibrate", "--calibration", "--no-sensitivity", "--sensitivity",
+                           "--scene",
                            "--seed-table", "--strength", "--elasticity-as"})
     if (sub->count(name) > 0) throw io::UsageError(std::string(name) + " is an option of self-contact, not forced-contact");
   fc::Options opt;

@@ -116,6 +116,20 @@ std::string robustness_of(const Findings& f, const std::string& id) {
   return "";
 }
 
+OJson held_out_json(const HeldOut& h) {
+  if (!h.computed) return nullptr;
+  return {{"observed", number(h.observed)},     {"ci95", interval(h.ci95)},
+          {"n", h.n},                           {"p_support_holm", number(h.p_support_holm)},
+          {"p_refute_holm", number(h.p_refute_holm)}, {"verdict", verdict_name(h.verdict)},
+          {"reason", h.reason},                 {"observed_text", h.observed_text}};
+}
+
+OJson figures_json(const Claim& c) {
+  OJson out = OJson::object();
+  for (const auto& [name, value] : c.figures) out[name] = number(value);
+  return out;
+}
+
 }  // namespace
 
 nlohmann::ordered_json claim_json(const Claim& c) {
@@ -132,7 +146,17 @@ nlohmann::ordered_json claim_json(const Claim& c) {
           {"verdict", verdict_name(c.verdict)},
           {"rule", c.rule},
           {"reason", c.reason},
-          {"wall_clock", c.wall_clock}};
+          {"wall_clock", c.wall_clock},
+          {"seed_makes", c.seed_makes},
+          {"margin", number(c.margin)},
+          {"band", c.band},
+          {"family", c.family},
+          {"p_support", number(c.p_support)},
+          {"p_refute", number(c.p_refute)},
+          {"p_support_holm", number(c.p_support_holm)},
+          {"p_refute_holm", number(c.p_refute_holm)},
+          {"figures", figures_json(c)},
+          {"held_out", held_out_json(c.held_out)}};
 }
 
 std::string experiment_json(const Plan& plan, const Findings& f, const std::vector<io::Json>& results) {

@@ -71,8 +71,10 @@ void list_cases(Plan& p) {
     p.cases.push_back({CaseSpec::PhaseTiming, 0, 0, 0, 0});
   }
   for (int v = 0; v < static_cast<int>(p.variants.size()); ++v)
-    for (int c : p.cells)
+    for (int c : p.cells) {
+      if (p.variants[v].reuses_none && CellGrid::key(c).mode == 0) continue;  // the baseline's runs
       for (int s = 0; s < seeds; ++s) p.cases.push_back({CaseSpec::Run, v, c, s, 0});
+    }
 }
 
 std::uint64_t wind_seed(const Plan& p, const CaseSpec& c) {
@@ -103,7 +105,8 @@ Plan make_plan(const Options& o) {
     p.baseline.air_drag = p.calibration.air_drag;
     p.baseline.swirl_rate = p.calibration.swirl_rate;
   }
-  p.variants = variants(p.baseline, *p.base.cloth, o.sensitivity && !o.quick && !o.calibrate);
+  if (!is_sensitivity_set(o.sensitivity)) throw io::UsageError("--sensitivity must be none, strength or all");
+  p.variants = variants(p.baseline, *p.base.cloth, o.quick || o.calibrate ? "none" : o.sensitivity);
   list_cases(p);
   return p;
 }
@@ -203,7 +206,7 @@ std::string command_line(const Options& o) {
     cmd += " --runs ";
     for (std::size_t k = 0; k < o.cells.size(); ++k) cmd += fmt::format("{}{}", k ? "," : "", o.cells[k]);
   }
-  if (!o.sensitivity && !o.quick && !o.calibrate) cmd += " --no-sensitivity";
+  if (o.sensitivity != "strength" && !o.quick && !o.calibrate) cmd += " --sensitivity " + o.sensitivity;
   if (!o.elasticity_as.empty()) cmd += " --elasticity-as " + o.elasticity_as;
   if (o.strength >= 0.0) cmd += fmt::format(" --strength {}", o.strength);
   return cmd;

@@ -13,7 +13,9 @@
 ///  - with every cell selected: two timing cases (tri-tri tests, phases of a step; timing.h);
 ///  - for each reading (the baseline, then the sensitivity variants), for each selected cell,
 ///    for each seed index s < N: one run, wind seed substream(scene seed, s) (so the seeds of one
-///    cell are consecutive cases and an ensemble spreads over the shards);
+///    cell are consecutive cases and an ensemble spreads over the shards); a variant that only
+///    changes the push (Variant::reuses_none) runs its mode cells only and takes the baseline's
+///    no-response runs, which would be the same bytes;
 /// and with --calibrate instead: for each grid point, each fit cell, each seed: one run.
 /// Results travel as JSON (sweep.h), so an unsharded run and a merge of its shards assemble the
 /// same bytes apart from wall-clock fields (the timing cases and the claims decided from them).
@@ -36,7 +38,7 @@ struct Options {
   int seeds = 0;                       ///< runs per cell; 0 = the settings' default
   std::vector<std::string> detectors;  ///< counting detectors; empty = core-mt and core (quick: core-mt)
   std::vector<int> cells;              ///< --runs: only these cells, in this order; empty = all 72
-  bool sensitivity = true;             ///< the variants of sensitivity.h (never with --quick)
+  std::string sensitivity = "strength";  ///< the readings of sensitivity.h: none | strength | all (none with --quick)
   bool calibrate = false;              ///< run the calibration instead of the experiment
   std::string elasticity_as;           ///< "" = stiffness (the scene's reading)
   double strength = -1.0;              ///< push [N]; < 0 = the scene's

@@ -17,12 +17,11 @@ void gather(const Plan& plan, const std::vector<io::Json>& results, Findings& f)
     if (c.kind == CaseSpec::TriTriTiming && !err) f.tritri = results[k];
     if (c.kind == CaseSpec::PhaseTiming && !err) f.phases = results[k];
     if (c.kind != CaseSpec::Run) continue;
-    if (err) {
-      f.ensembles[c.variant].add(c.cell, c.seed, nullptr, err);
-      continue;
+    const RunResult r = err ? RunResult{} : run_from_json(results[k]);
+    for (std::size_t v = 0; v < plan.variants.size(); ++v) {
+      const bool shared = c.variant == 0 && plan.variants[v].reuses_none && CellGrid::key(c.cell).mode == 0;
+      if (static_cast<int>(v) == c.variant || shared) f.ensembles[v].add(c.cell, c.seed, err ? nullptr : &r, err);
     }
-    const RunResult r = run_from_json(results[k]);
-    f.ensembles[c.variant].add(c.cell, c.seed, &r, nullptr);
   }
 }
 
@@ -38,12 +37,13 @@ std::string timing_gap(const Plan& plan, const Findings& f) {
 Findings find(const Plan& plan, const std::vector<io::Json>& results) {
   Findings f;
   gather(plan, results, f);
+  const std::string gap = timing_gap(plan, f);
+  const CostHalf cost = detection_cost(f.phases.is_null() ? nullptr : &f.phases, plan.settings, gap);
   for (std::size_t d = 0; d < plan.detectors.size(); ++d) {
-    const auto c = detector_claims(f.ensembles[0], d, plan.seed, plan.settings, plan.calibration.fit);
+    const auto c = detector_claims(f.ensembles[0], d, plan.seed, plan.settings, plan.calibration.fit, cost);
     f.claims.insert(f.claims.end(), c.begin(), c.end());
   }
   for (const Claim& c : premise_claims(f.ensembles[0], plan.settings)) f.claims.push_back(c);
-  const std::string gap = timing_gap(plan, f);
   for (const Claim& c : timing_claims(f.tritri.is_null() ? nullptr : &f.tritri, f.phases.is_null() ? nullptr : &f.phases,
                                       plan.settings, gap))
     f.claims.push_back(c);
@@ -51,7 +51,7 @@ Findings find(const Plan& plan, const std::vector<io::Json>& results) {
     for (std::size_t v = 0; v < plan.variants.size(); ++v)
       for (std::size_t d = 0; d < plan.detectors.size(); ++d) {
         SensitivityRow row{plan.variants[v].id, contact_test_name(plan.detectors[d]),
-                           detector_claims(f.ensembles[v], d, plan.seed, plan.settings, plan.calibration.fit)};
+                           detector_claims(f.ensembles[v], d, plan.seed, plan.settings, plan.calibration.fit, cost)};
         if (d == 0)
           for (const Claim& c : premise_claims(f.ensembles[v], plan.settings)) row.claims.push_back(c);
         f.rows.push_back(std::move(row));

@@ -21,12 +21,20 @@ struct Variant {
   std::string choice;  ///< the open choice it varies: "elasticity", "wind", "push strength", ...
   std::string about;   ///< the alternative in words
   Interpretation in;
+  /// Its no-response cells are the baseline's runs, not run again: it changes only the edge
+  /// modes' push, which acts in mode cells alone (a no-response run never reads it).
+  bool reuses_none = false;
 };
 
-/// The baseline first, then (when `alternatives`) one variant per alternative: elasticity as
-/// restitution; the wind in total; push 0.4x and 2x; swirl rate 0.5x and 2x; drag 0.5x and 2x;
-/// heading diffusion 0 and 4x; hung by its two top corners (three nodes each) on `cloth`.
-std::vector<Variant> variants(const Interpretation& baseline, const ClothGridSpec& cloth, bool alternatives);
+/// Which readings beside the baseline a run holds (--sensitivity): "none"; "strength" (the
+/// default: the push strengths that were tried, 0.4x and 2x the baseline's, 0.02 and 0.1 N at the
+/// scene's 0.05 N); "all" (every open choice: see variants()).
+bool is_sensitivity_set(const std::string& name);
+
+/// The baseline first, then the variants of the set `which` ("none", "strength", "all"). "all":
+/// elasticity as restitution; the wind in total; push 0.4x and 2x; swirl rate 0.5x and 2x; drag
+/// 0.5x and 2x; heading diffusion 0 and 4x; hung by its two top corners (three nodes each) on `cloth`.
+std::vector<Variant> variants(const Interpretation& baseline, const ClothGridSpec& cloth, const std::string& which);
 
 struct SensitivityRow {
   std::string variant, detector;

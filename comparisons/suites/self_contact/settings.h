@@ -11,9 +11,19 @@ struct Settings {
   double simulated_time = 10.0;  ///< [s] per run: the seed's tables count 501, 1001, 2000 frames
   int seeds = 10;                ///< runs per cell (wind realisations), unless --seeds says otherwise
 
-  /// Claim rules (claims.h). "Little" / "level": a relative effect inside +-margin; the margin is the
-  /// smallest gain the seed reports as a gain (mode 3's 10% at 0.1 N).
+  /// Claim rules (claims.h), all set before any run was compared. Verdicts at level alpha after
+  /// Holm's adjustment within each family of claims.
+  double alpha = 0.05;
+  /// "Little" / "level": equivalence of a relative effect to 0 within +-margin, the smallest gain
+  /// the seed reports as a gain (mode 3's 10% at 0.1 N).
   double margin = 0.10;
+  /// "About 20%": equivalence of (ours - the seed's) within +-size_margin: the seed's own statements
+  /// of mode 3's gain span 10% to 20% (10% at 0.1 N, 20% at the other winds, "up to 20%").
+  double size_margin = 0.10;
+  /// cells-match: the rate of seed values outside our 95% prediction intervals is equivalent to 5%
+  /// when it lies in [coverage_lo, coverage_hi]: the rates of a 95% interval whose width is off by
+  /// a factor of about 4/3 either way (z 1.96 x 4/3 -> 0.9%, z 1.96 x 3/4 -> 14%).
+  double coverage_lo = 0.01, coverage_hi = 0.14;
   /// "Much slower": at least this ratio of times (the seed: "extremely low performance").
   double much_slower = 2.0;
   /// "Often" / "constantly": in at least this share of the frames with a contact.

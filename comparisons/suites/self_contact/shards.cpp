@@ -38,7 +38,8 @@ Options options_from_json(const io::JsonReader& rd, const io::Json& j, const std
   const io::Json& runs = rd.require_array(rd.require(j, w, "runs"), io::child(w, "runs"));
   for (std::size_t k = 0; k < runs.size(); ++k)
     o.cells.push_back(static_cast<int>(rd.integer(runs[k], io::child(io::child(w, "runs"), k), 0, CellGrid::kCells - 1)));
-  o.sensitivity = rd.boolean(rd.require(j, w, "sensitivity"), io::child(w, "sensitivity"));
+  o.sensitivity = rd.string(rd.require(j, w, "sensitivity"), io::child(w, "sensitivity"));
+  if (!is_sensitivity_set(o.sensitivity)) rd.fail(io::child(w, "sensitivity"), "not one of none, strength, all");
   o.calibrate = rd.boolean(rd.require(j, w, "calibrate"), io::child(w, "calibrate"));
   o.elasticity_as = rd.string(rd.require(j, w, "elasticity_as"), io::child(w, "elasticity_as"));
   o.strength = rd.number(rd.require(j, w, "strength"), io::child(w, "strength"), 1e9);

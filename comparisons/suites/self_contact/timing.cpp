@@ -1,5 +1,7 @@
 #include "comparisons/suites/self_contact/timing.h"
 
+#include "comparisons/stats/stats.h"
+
 #include "core/cloth/edge_response.h"
 #include "core/cloth/mesh_topology.h"
 #include "core/cloth/self_contact_counter.h"
@@ -130,6 +132,17 @@ io::Json time_phases(const Scene& scene, const Settings& s) {
 
 namespace {
 
+/// The threshold tests: above (support) and below (refute) `threshold`, one-sided t over the values.
+void threshold_tests(Claim& c, const Summary& s, double threshold) {
+  if (!take_summary(c, s)) return;
+  c.p_support = stats::p_above(stats::mean_estimate(s), threshold);
+  c.p_refute = stats::p_below(stats::mean_estimate(s), threshold);
+}
+
+const char* const kCostDecision =
+    " Both p-values are Holm-adjusted over the three cost claims; reproduced if the adjusted support p < 0.05, else not "
+    "reproduced if the adjusted refute p < 0.05, else inconclusive.";
+
 std::vector<double> numbers(const io::Json& a) {
   std::vector<double> out;
   for (const auto& x : a) out.push_back(x.get<double>());
@@ -139,14 +152,15 @@ std::vector<double> numbers(const io::Json& a) {
 Claim rotation_claim(const io::Json* tt, const Settings& s, const std::string& why) {
   Claim c;
   c.id = "rotation-slower-than-mt";
+  c.family = "cost";
   c.wall_clock = true;
   c.unit = "ratio";
   c.statement = "The rotation test is much slower than Möller-Trumbore, even with the latter run both ways (section 3.1.3).";
   c.seed_text = "\"extremely low\" performance against \"much more efficient\"; no number";
   c.rule = fmt::format("threshold: per repetition, rotation ns per pair / Möller-Trumbore (both ways) ns per pair over "
                        "the same pairs (every pair sharing no vertex of frames of a no-response run); 95% t interval over "
-                       "repetitions. \"Much\" read as at least {}x: reproduced if the interval lies above {}, not "
-                       "reproduced if below, inconclusive otherwise.", s.much_slower, s.much_slower);
+                       "repetitions. \"Much\" read as at least {}x. Support: one-sided t test over repetitions that "
+                       "the ratio lies above {}; refute: below.{}", s.much_slower, s.much_slower, kCostDecision);
   if (!tt) {
     c.reason = why;
     return c;
@@ -155,15 +169,12 @@ Claim rotation_claim(const io::Json* tt, const Settings& s, const std::string& w
   std::vector<double> ratio;
   for (std::size_t k = 0; k < rot.size() && k < mt.size(); ++k) ratio.push_back(rot[k] / mt[k]);
   const Summary r = summarize(ratio), sr = summarize(rot), sm = summarize(mt);
-  c.observed = r.mean;
-  c.ci95 = r.ci95;
-  c.n = r.n;
+  threshold_tests(c, r, s.much_slower);
   c.observed_text = fmt::format("rotation {:.1f} ns, Möller-Trumbore both ways {:.1f} ns per pair, over {} pairs x {} "
                                 "frames; pairs reported: exact {}, Möller-Trumbore {}, rotation {}",
                                 sr.mean, sm.mean, tt->at("pairs").get<long long>(),
                                 tt->at("frames").get<long long>(), tt->at("hits").at("core").get<long long>(),
                                 tt->at("hits").at("core-mt").get<long long>(), tt->at("hits").at("core-rotation").get<long long>());
-  c.verdict = threshold_verdict(c.ci95, s.much_slower);
   return c;
 }
 
@@ -171,14 +182,15 @@ Claim phase_claim(const io::Json* ph, const char* id, const char* detect_key, co
                   const std::string& why) {
   Claim c;
   c.id = id;
+  c.family = "cost";
   c.wall_clock = true;
   c.unit = "ratio";
   c.statement = "Collision detection is the costliest part of a step (section 3.1.1; 3.1.3: \"the heaviest step of the "
                 "whole process\"), " + how + ".";
   c.seed_text = "\"indubitably the costliest step\", O(n^2); no number";
-  c.rule = "threshold: per block of steps, detection time / the largest other phase (the step's forces and integration, "
-           "the edge response); 95% t interval over blocks. Reproduced if it lies above 1, not reproduced if below 1, "
-           "inconclusive otherwise.";
+  c.rule = std::string("threshold: per block of steps, detection time / the largest other phase (the step's forces and "
+                       "integration, the edge response); 95% t interval over blocks. Support: one-sided t test that it "
+                       "lies above 1; refute: below 1.") + kCostDecision;
   if (!ph) {
     c.reason = why;
     return c;
@@ -191,25 +203,45 @@ Claim phase_claim(const io::Json* ph, const char* id, const char* detect_key, co
     share.push_back(det[b] / (step[b] + det[b] + resp[b]));
   }
   const Summary r = summarize(ratio), sh = summarize(share), ss = summarize(step), sd = summarize(det), sr = summarize(resp);
-  c.observed = r.mean;
-  c.ci95 = r.ci95;
-  c.n = r.n;
+  threshold_tests(c, r, 1.0);
   c.observed_text = fmt::format("per step: forces and integration {:.1f} us, detection {:.1f} us, response {:.1f} us; "
                                 "detection {:.0f}% of the step's time",
                                 1e6 * ss.mean, 1e6 * sd.mean, 1e6 * sr.mean, 100.0 * sh.mean);
-  c.verdict = threshold_verdict(c.ci95, 1.0);
   return c;
 }
 
 }  // namespace
 
+CostHalf detection_cost(const io::Json* phases, const Settings& s, const std::string& why) {
+  CostHalf h;
+  if (!phases) {
+    h.reason = why;
+    return h;
+  }
+  const io::Json& t = phases->at("seconds_per_step");
+  const auto step = numbers(t.at("step")), det = numbers(t.at("detect_brute_mt")), resp = numbers(t.at("response"));
+  std::vector<double> ratio;
+  for (std::size_t b = 0; b < step.size(); ++b) ratio.push_back((step[b] + det[b] + resp[b]) / step[b]);
+  Claim c;
+  threshold_tests(c, summarize(ratio), s.much_slower);
+  h.observed = c.observed;
+  h.ci95 = c.ci95;
+  h.n = c.n;
+  h.p_support = c.p_support;
+  h.p_refute = c.p_refute;
+  h.reason = c.reason;
+  return h;
+}
+
 std::vector<Claim> timing_claims(const io::Json* tritri, const io::Json* phases, const Settings& s,
                                  const std::string& why) {
-  return {rotation_claim(tritri, s, why),
+  std::vector<Claim> out{rotation_claim(tritri, s, why),
           phase_claim(phases, "detection-dominates-step", "detect_brute_mt",
                       "with the seed's detection: every pair, Möller-Trumbore both ways", why),
           phase_claim(phases, "detection-dominates-step-bvh", "detect_bvh",
                       "with the harness's detection: a box tree and the exact test", why)};
+  apply_holm(out, s.alpha);
+  return out;
 }
 
 }  // namespace tecido::suites::self_contact

@@ -31,6 +31,9 @@ io::Json time_phases(const Scene& scene, const Settings& s);
 /// rotation-slower-than-mt, detection-dominates-step (brute force, the seed's) and
 /// detection-dominates-step-bvh from those results; a null result (not run, or a case that
 /// failed: `why`) gives inconclusive claims saying so.
+/// mode1-marginal's cost half from the phase timing (claims.h: CostHalf); `why` when it is null.
+CostHalf detection_cost(const io::Json* phases, const Settings& s, const std::string& why);
+
 std::vector<Claim> timing_claims(const io::Json* tritri, const io::Json* phases, const Settings& s,
                                  const std::string& why);
 

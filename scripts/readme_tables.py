@@ -1,0 +1,236 @@
+#!/usr/bin/env python3
+"""README.md's self-contact verdict table, generated from a committed experiment.json.
+
+The block between the marker comments
+    <!-- self-contact-verdicts:begin -->  ...  <!-- self-contact-verdicts:end -->
+is rewritten from the result file (default docs/results/self_contact_experiment.json); nothing else
+of the README is touched. With --check nothing is written: the exit code is 1 when the README's
+block differs from what the file gives (a unified diff on stderr), 0 when it is the same.
+Bad input (a missing file, a file that is not an experiment result, no markers): one line on
+stderr naming the file and the problem, exit 2, nothing written.
+
+    python3 scripts/readme_tables.py            # rewrite README.md's block
+    python3 scripts/readme_tables.py --check    # the test (tests/comparisons/cli/test_readme_tables.cpp)
+"""
+import argparse
+import difflib
+import json
+import math
+import os
+import sys
+import tempfile
+import textwrap
+
+BEGIN = "<!-- self-contact-verdicts:begin -->"
+END = "<!-- self-contact-verdicts:end -->"
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+SEED_CLAIMS = ["mode3-better", "mode3-size", "mode3-wind", "mode2-worse", "mode1-marginal"]
+CHECKS = ["mode3-every-step", "mode3-every-elasticity", "elasticity-level", "step-level", "cells-match"]
+PREMISE = ["premise-border", "premise-gia-fails"]
+COST = ["rotation-slower-than-mt", "detection-dominates-step", "detection-dominates-step-bvh"]
+SHORT = {"reproduced": "R", "not reproduced": "N", "inconclusive": "?"}
+
+
+class InputProblem(Exception):
+    """A one-line problem with an input file."""
+
+
+def value(claim, x):
+    if x is None or (isinstance(x, float) and math.isnan(x)):
+        return "n/a"
+    unit = claim["unit"]
+    if unit in ("relative change", "difference of relative changes"):
+        return f"{100.0 * x:+.1f}%"
+    if unit == "ratio":
+        return f"{x:.2f}"
+    return f"{x:.3f}"
+
+
+def ours(claim):
+    lo, hi = claim["ci95"]
+    return f"{value(claim, claim['observed'])} [{value(claim, lo)}, {value(claim, hi)}]"
+
+
+def p_text(p):
+    return "n/a" if p is None else f"{p:.2g}"
+
+
+def verdict(claim):
+    v = claim["verdict"]
+    if v == "reproduced":
+        return f"reproduced (p {p_text(claim['p_support_holm'])})"
+    if v == "not reproduced":
+        return f"**not reproduced** (p {p_text(claim['p_refute_holm'])})"
+    return "inconclusive" + (" (no variation)" if claim["reason"].startswith("no variation") else "")
+
+
+def seed_value(claim):
+    if claim["seed"] is None:
+        return claim["seed_text"].split(";")[0]
+    return value(claim, claim["seed"])
+
+
+class Result:
+    def __init__(self, path):
+        self.path = path
+        try:
+            with open(path, encoding="utf-8") as f:
+                self.doc = json.load(f)
+        except OSError as e:
+            raise InputProblem(f"{path}: cannot read: {e.strerror}")
+        except json.JSONDecodeError as e:
+            raise InputProblem(f"{path}: line {e.lineno}: not JSON: {e.msg}")
+        if not isinstance(self.doc, dict) or self.doc.get("experiment") != "self-contact" or "claims" not in self.doc:
+            raise InputProblem(f"{path}: /experiment: not a self-contact experiment result")
+        self.detectors = self.doc["detectors"]
+
+    def claim(self, cid, detector=None):
+        for c in self.doc["claims"]:
+            if c["id"] == cid and c["detector"] == detector:
+                return c
+        raise InputProblem(f"{self.path}: /claims: no claim \"{cid}\" for detector {detector}")
+
+    def strengths(self):
+        """(strength in N, variant id) of the baseline and the push variants, ascending."""
+        out = [(self.doc["strength"], "baseline")]
+        for v in self.doc["sensitivity"]["variants"]:
+            if v["choice"] == "push strength":
+                out.append((v["interpretation"]["strength"], v["id"]))
+        return sorted(out)
+
+    def row_verdict(self, variant, detector, cid):
+        for r in self.doc["sensitivity"]["rows"]:
+            if r["variant"] == variant and r["detector"] == detector:
+                return r["verdicts"].get(cid, "inconclusive")
+        if variant == "baseline":
+            return self.claim(cid, detector)["verdict"]
+        raise InputProblem(f"{self.path}: /sensitivity/rows: no row for {variant} and {detector}")
+
+
+def detector_table(res):
+    dets = res.detectors
+    head = "| claim | the seed | " + " | ".join(f"`{d}`, 95% interval | verdict (Holm p)" for d in dets) + " |"
+    lines = [head, "|---|---|" + "---|---|" * len(dets)]
+    for cid in SEED_CLAIMS:
+        cs = [res.claim(cid, d) for d in dets]
+        lines.append(f"| `{cid}` | {seed_value(cs[0])} | " + " | ".join(f"{ours(c)} | {verdict(c)}" for c in cs) + " |")
+    for cid in PREMISE:
+        c = res.claim(cid)
+        lines.append(f"| `{cid}` | {c['seed_text'].split(';')[0]} | {ours(c)} | {verdict(c)} |" + " |" * (2 * len(dets) - 2))
+    return lines
+
+
+def checks_line(res):
+    parts = []
+    for cid in CHECKS:
+        vs = " / ".join(res.claim(cid, d)["verdict"] for d in res.detectors)
+        parts.append(f"`{cid}` {vs}")
+    return "Checks of ours that the seed never states (" + " / ".join(f"`{d}`" for d in res.detectors) + "): " + \
+        "; ".join(parts) + "."
+
+
+def coverage_line(res):
+    c = res.claim("cells-match", res.detectors[0])
+    f = c["figures"]
+    return (f"`cells-match` (`{res.detectors[0]}`): {int(f['outside'])} of {int(f['cells'])} seed values outside our 95% "
+            f"prediction intervals; Spearman {f['spearman']:.2f} [{f['spearman_ci95_lo']:.2f}, "
+            f"{f['spearman_ci95_hi']:.2f}]; our single-run sd {f['run_sd']:.3f} against the seed's spread "
+            f"{f['seed_spread']:.3f}.")
+
+
+def held_out_line(res):
+    differ = []
+    for d in res.detectors:
+        for cid in SEED_CLAIMS + CHECKS:
+            c = res.claim(cid, d)
+            h = c.get("held_out")
+            if h and h["verdict"] != c["verdict"]:
+                differ.append(f"`{cid}` with `{d}` ({c['verdict']} -> {h['verdict']})")
+    tail = "every verdict is the same." if not differ else "the verdicts differ for " + ", ".join(differ) + "."
+    return "Without the cell pairs that touch a calibration cell: " + tail
+
+
+def cost_line(res):
+    parts = [f"`{cid}` {value(res.claim(cid), res.claim(cid)['observed'])} ({res.claim(cid)['verdict']})" for cid in COST]
+    return "Cost, wall-clock on the machine of that run (ratios): " + "; ".join(parts) + "."
+
+
+def strength_line(res):
+    strengths = res.strengths()
+    head = ("Verdict per push strength (" + ", ".join(f"{s:g}" for s, _ in strengths) + " N; R reproduced, N not "
+            "reproduced, ? inconclusive; " + ", then ".join(f"`{d}`" for d in res.detectors) + "): ")
+    parts = []
+    for cid in SEED_CLAIMS + CHECKS:
+        per_det = ["".join(SHORT[res.row_verdict(v, d, cid)] for _, v in strengths) for d in res.detectors]
+        parts.append(f"`{cid}` {' '.join(per_det)}")
+    return head + "; ".join(parts) + "."
+
+
+def paragraph(text, bullet=False):
+    return textwrap.wrap(text, width=190, break_long_words=False, break_on_hyphens=False,
+                         initial_indent="- " if bullet else "", subsequent_indent="  " if bullet else "")
+
+
+def block(res, rel_path):
+    d = res.doc
+    prov = d.get("tecido", {})
+    lines = [BEGIN] + paragraph(
+        f"Generated by `python3 scripts/readme_tables.py` from [{rel_path}]({rel_path}): `{d['command']}` at commit "
+        f"{prov.get('commit', 'unknown')}, {d['seeds']} wind seeds per cell, {d['simulated_time']:g} s per run; "
+        "verdicts after Holm's adjustment within each detector's claims (p: the adjusted p of the deciding test).") + [""]
+    lines += detector_table(res)
+    lines.append("")
+    for text in (checks_line(res), coverage_line(res), held_out_line(res), cost_line(res), strength_line(res)):
+        lines += paragraph(text, bullet=True)
+    lines.append(END)
+    return lines
+
+
+def split_readme(path, text):
+    lines = text.split("\n")
+    try:
+        b, e = lines.index(BEGIN), lines.index(END)
+    except ValueError:
+        raise InputProblem(f"{path}: no {BEGIN} ... {END} block")
+    if e < b:
+        raise InputProblem(f"{path}: the end marker comes before the begin marker")
+    return lines[:b], lines[b:e + 1], lines[e + 1:]
+
+
+def main(argv):
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap.add_argument("--readme", default=os.path.join(ROOT, "README.md"))
+    ap.add_argument("--result", default=os.path.join(ROOT, "docs", "results", "self_contact_experiment.json"))
+    ap.add_argument("--check", action="store_true", help="exit 1 when the README's block differs; write nothing")
+    a = ap.parse_args(argv)
+    try:
+        res = Result(a.result)
+        try:
+            with open(a.readme, encoding="utf-8") as f:
+                text = f.read()
+        except OSError as e:
+            raise InputProblem(f"{a.readme}: cannot read: {e.strerror}")
+        before, current, after = split_readme(a.readme, text)
+        rel = os.path.relpath(os.path.abspath(a.result), os.path.dirname(os.path.abspath(a.readme)))
+        wanted = block(res, rel)
+    except InputProblem as e:
+        print(f"readme_tables: {e}", file=sys.stderr)
+        return 2
+    if a.check:
+        if current == wanted:
+            return 0
+        sys.stderr.writelines(l + "\n" for l in difflib.unified_diff(current, wanted, a.readme, a.result, lineterm=""))
+        print(f"readme_tables: {a.readme}: the self-contact block differs from {a.result}; "
+              "run python3 scripts/readme_tables.py", file=sys.stderr)
+        return 1
+    out = "\n".join(before + wanted + after)
+    fd, tmp = tempfile.mkstemp(dir=os.path.dirname(os.path.abspath(a.readme)), prefix=".README.")
+    with os.fdopen(fd, "w", encoding="utf-8") as f:
+        f.write(out)
+    os.chmod(tmp, os.stat(a.readme).st_mode & 0o7777)
+    os.replace(tmp, a.readme)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv[1:]))
