@@ -6,9 +6,11 @@
 #include "core/cloth/continuous_self_collision.h"
 #include "reference/exact_ccd.h"
 
+#include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
 #include <iostream>
+#include <iterator>
 
 namespace tecido::cli {
 
@@ -37,22 +39,39 @@ void check_size(const std::string& engine, std::size_t triangles, std::size_t li
                          " triangles, but " + file + " has " + std::to_string(triangles) + " (use core)");
 }
 
-ContinuousContacts run_engine(const std::string& name, const io::ObjMesh& m0, const io::ObjMesh& m1) {
+ContinuousContacts run_engine(const std::string& name, const io::ObjMesh& m0, const io::ObjMesh& m1, int threads) {
   const auto& x0 = m0.vertices;
   const auto& x1 = m1.vertices;
   const auto& tris = m0.triangles;
   if (name == "core-brute") return continuous_self_collision_brute(x0, x1, tris);
   if (name == "exact") return continuous_self_collision_brute(x0, x1, tris, &exact_test);
   ContinuousSelfCollisionDetector det(tris, x0);
+  det.set_threads(threads);
   const ContinuousContacts& candidates = det.detect(x0, x1);
-  return filter_contacts(candidates, x0, x1, tris, [](const CcdQuery& q) { return reference::exact_ccd(q).hit; });
+  // The referee's filter decides nearly every candidate; exact arithmetic only where it cannot.
+  return filter_contacts(candidates, x0, x1, tris, &reference::exact_ccd_hit, threads);
 }
 
-nlohmann::ordered_json contacts_json(const ContinuousContacts& c) {
-  nlohmann::ordered_json vf = nlohmann::ordered_json::array(), ee = nlohmann::ordered_json::array();
-  for (const auto& p : c.vertex_face) vf.push_back({p[0], p[1]});
-  for (const auto& p : c.edge_edge) ee.push_back({{p[0][0], p[0][1]}, {p[1][0], p[1][1]}});
-  return {{"vertex_face", std::move(vf)}, {"edge_edge", std::move(ee)}};
+/// `{"vertex_face":[[v,f],...],"edge_edge":[[[a,b],[c,d]],...]}`, written as it goes (no
+/// document of it is built: a large mesh's answer has hundreds of thousands of pairs).
+void print_contacts(const ContinuousContacts& c) {
+  std::string chunk = "{\"vertex_face\":[";
+  const auto spill = [&chunk] {
+    if (chunk.size() < (1u << 16)) return;
+    std::cout << chunk;
+    chunk.clear();
+  };
+  for (std::size_t k = 0; k < c.vertex_face.size(); ++k) {
+    fmt::format_to(std::back_inserter(chunk), "{}[{},{}]", k ? "," : "", c.vertex_face[k][0], c.vertex_face[k][1]);
+    spill();
+  }
+  chunk += "],\"edge_edge\":[";
+  for (std::size_t k = 0; k < c.edge_edge.size(); ++k) {
+    const EdgeEdgePair& p = c.edge_edge[k];
+    fmt::format_to(std::back_inserter(chunk), "{}[[{},{}],[{},{}]]", k ? "," : "", p[0][0], p[0][1], p[1][0], p[1][1]);
+    spill();
+  }
+  std::cout << chunk << "]}";
 }
 
 }  // namespace
@@ -62,7 +81,7 @@ const std::vector<std::string>& continuous_selfcollide_engines() {
   return names;
 }
 
-int run_selfcollide_continuous(const std::string& start, const std::string& end, const std::string& engines) {
+int run_selfcollide_continuous(const std::string& start, const std::string& end, const std::string& engines, int threads) {
   const auto names = parse_engine_list(engines, continuous_selfcollide_engines(), "continuous self-collision");
   const io::ObjMesh m0 = io::load_obj_mesh(start), m1 = io::load_obj_mesh(end);
   check_same_mesh(m0, m1, start, end);
@@ -70,9 +89,12 @@ int run_selfcollide_continuous(const std::string& start, const std::string& end,
     if (n == "core-brute") check_size(n, m0.triangles.size(), kMaxBruteForceTriangles, start);
     if (n == "exact") check_size(n, m0.triangles.size(), kMaxExactContinuousTriangles, start);
   }
-  nlohmann::ordered_json out = nlohmann::ordered_json::object();
-  for (const auto& n : names) out[n] = contacts_json(run_engine(n, m0, m1));
-  std::cout << out.dump() << "\n";
+  std::cout << "{";
+  for (std::size_t k = 0; k < names.size(); ++k) {
+    std::cout << (k ? "," : "") << nlohmann::json(names[k]).dump() << ":";
+    print_contacts(run_engine(names[k], m0, m1, threads));
+  }
+  std::cout << "}\n";
   return 0;
 }
 

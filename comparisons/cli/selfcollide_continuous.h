@@ -28,8 +28,11 @@ constexpr std::size_t kMaxBruteForceTriangles = std::size_t{1} << 14;
 /// exact referee (about 4.5 million edge pairs at this size).
 constexpr std::size_t kMaxExactContinuousTriangles = std::size_t{1} << 11;
 
-/// Runs the command; returns the exit code. Throws io::InputError / io::UsageError on bad input.
-int run_selfcollide_continuous(const std::string& start, const std::string& end, const std::string& engines);
+/// Runs the command on `threads` threads (>= 1: core's detection and the referee's confirmation
+/// of its candidates; the output does not depend on it); returns the exit code. Throws
+/// io::InputError / io::UsageError on bad input.
+int run_selfcollide_continuous(const std::string& start, const std::string& end, const std::string& engines,
+                               int threads = 1);
 
 /// The engine names it knows, in order (exact only in the reference build).
 const std::vector<std::string>& continuous_selfcollide_engines();
