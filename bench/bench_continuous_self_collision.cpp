@@ -14,17 +14,25 @@
 //   BM_ContinuousSelfCollision/discrete/<n>         discrete self-collision of frame 1
 //                                                   (self_collision.h)
 //   BM_ContinuousSelfCollision/core-gentle/<n>, .../discrete-gentle/<n>  the same, gentle step
+//   BM_ContinuousSelfCollision/confirmed/<n>        detect, then each candidate confirmed by the
+//                                                   exact referee (reference::exact_ccd_hit): the
+//                                                   exact answer, what `tecido selfcollide --to`
+//                                                   computes (engine core)
+//   BM_ContinuousSelfCollision/threads:<t>/<n>      detect on t threads (wall time: UseRealTime)
+//   BM_ContinuousSelfCollision/discrete-threads:<t>/<n>  discrete detection on t threads (wall time)
 // Both trees are built once on the rest shape, outside the timed loop. Counters: `pairs`
 // (reported pairs), `tests` (primitive pairs handed to the continuous test), `tree_pairs`
 // (triangle pairs sharing no vertex from the swept-box tree).
 #include "core/cloth/continuous_self_collision.h"
 #include "core/cloth/self_collision.h"
 #include "core/scene/cloth_builder.h"
+#include "reference/exact_ccd.h"
 
 #include <benchmark/benchmark.h>
 
 #include <cmath>
 #include <map>
+#include <string>
 
 namespace {
 
@@ -93,6 +101,43 @@ void continuous(benchmark::State& state, int kind) {
   state.counters["tree_pairs"] = static_cast<double>(det.last_triangle_pairs());
 }
 
+void confirmed(benchmark::State& state) {
+  const Step& st = step_of(static_cast<int>(state.range(0)), 0);
+  ContinuousSelfCollisionDetector det(st.tris, st.rest);
+  std::size_t pairs = 0;
+  for (auto _ : state) {
+    const ContinuousContacts c = filter_contacts(det.detect(st.x0, st.x1), st.x0, st.x1, st.tris, &reference::exact_ccd_hit);
+    pairs = c.vertex_face.size() + c.edge_edge.size();
+    benchmark::DoNotOptimize(pairs);
+  }
+  state.counters["pairs"] = static_cast<double>(pairs);
+}
+
+void continuous_threads(benchmark::State& state, int threads) {
+  const Step& st = step_of(static_cast<int>(state.range(0)), 0);
+  ContinuousSelfCollisionDetector det(st.tris, st.rest);
+  det.set_threads(threads);
+  std::size_t pairs = 0;
+  for (auto _ : state) {
+    const ContinuousContacts& c = det.detect(st.x0, st.x1);
+    pairs = c.vertex_face.size() + c.edge_edge.size();
+    benchmark::DoNotOptimize(pairs);
+  }
+  state.counters["pairs"] = static_cast<double>(pairs);
+}
+
+void discrete_threads(benchmark::State& state, int threads) {
+  const Step& st = step_of(static_cast<int>(state.range(0)), 0);
+  SelfCollisionDetector det(st.tris, st.rest);
+  det.set_threads(threads);
+  std::size_t pairs = 0;
+  for (auto _ : state) {
+    pairs = det.detect(st.x1).size();
+    benchmark::DoNotOptimize(pairs);
+  }
+  state.counters["pairs"] = static_cast<double>(pairs);
+}
+
 void discrete(benchmark::State& state, int kind) {
   const Step& st = step_of(static_cast<int>(state.range(0)), kind);
   SelfCollisionDetector det(st.tris, st.rest);
@@ -109,6 +154,18 @@ const int registered = [] {
   for (int n : {32, 64, 128, 256}) {
     benchmark::RegisterBenchmark("BM_ContinuousSelfCollision/core", continuous, 0)->Arg(n)->Unit(benchmark::kMillisecond);
     benchmark::RegisterBenchmark("BM_ContinuousSelfCollision/discrete", discrete, 0)->Arg(n)->Unit(benchmark::kMillisecond);
+    benchmark::RegisterBenchmark("BM_ContinuousSelfCollision/confirmed", confirmed)->Arg(n)->Unit(benchmark::kMillisecond);
+  }
+  for (int t : {1, 2}) {
+    const std::string suffix = ":" + std::to_string(t);
+    benchmark::RegisterBenchmark(("BM_ContinuousSelfCollision/threads" + suffix).c_str(), continuous_threads, t)
+        ->Arg(256)
+        ->UseRealTime()
+        ->Unit(benchmark::kMillisecond);
+    benchmark::RegisterBenchmark(("BM_ContinuousSelfCollision/discrete-threads" + suffix).c_str(), discrete_threads, t)
+        ->Arg(256)
+        ->UseRealTime()
+        ->Unit(benchmark::kMillisecond);
   }
   for (int n : {32, 64, 128, 256}) {
     benchmark::RegisterBenchmark("BM_ContinuousSelfCollision/core-gentle", continuous, 1)->Arg(n)->Unit(benchmark::kMillisecond);

@@ -613,6 +613,12 @@ ExactCcd solve(const IntQuery& q) {
   return t->exact ? answer_at(t->lo) : answer_at(*t);
 }
 
+/// solve(q).hit without rounding the time of contact to doubles (the bisection on bit patterns
+/// of answer_at is most of the exact path's work on a hit).
+bool solve_hit(const IntQuery& q) {
+  return (q.kind == CcdKind::VertexFace ? earliest_vertex_face(q) : earliest_edge_edge(q)).has_value();
+}
+
 /// The answer for the only root of f in (lo, hi) (doubles, f(lo) of sign sign_lo, f(hi) of the
 /// other): bisection on the bit patterns of doubles with exact signs, then the exact sign at the
 /// midpoint of the two adjacent doubles around the root.
@@ -644,12 +650,16 @@ ExactCcd finish_hit(const CcdQuery& q, const CcdFilterVerdict& v) {
   return answer_between(f, v.lo, v.hi, v.sign_lo);
 }
 
-}  // namespace
-
-ExactCcd exact_ccd(const CcdQuery& q) {
+void check_finite(const CcdQuery& q) {
   for (const auto* x : {&q.x0, &q.x1})
     for (const Vec3& p : *x)
       if (!p.allFinite()) throw std::domain_error("exact_ccd: non-finite coordinate");
+}
+
+}  // namespace
+
+ExactCcd exact_ccd(const CcdQuery& q) {
+  check_finite(q);
   const CcdFilterVerdict v = certified_float_ccd(q);
   switch (v.kind) {
     case CcdFilterVerdict::Kind::Miss:
@@ -668,6 +678,13 @@ ExactCcd exact_ccd(const CcdQuery& q) {
       break;
   }
   return solve(integer_query(q));
+}
+
+bool exact_ccd_hit(const CcdQuery& q) {
+  check_finite(q);
+  const CcdFilterVerdict v = certified_float_ccd(q);
+  if (v.kind != CcdFilterVerdict::Kind::Unproven) return v.kind == CcdFilterVerdict::Kind::Hit;
+  return solve_hit(integer_query(q));
 }
 
 ExactCcd exact_ccd_unfiltered(const CcdQuery& q) { return solve(integer_query(q)); }

@@ -38,6 +38,7 @@
 #include <iostream>
 #include <memory>
 #include <optional>
+#include <thread>
 
 namespace tecido::cli {
 
@@ -48,6 +49,7 @@ struct RunOptions {
   double dt = 0.0;
   long long steps = 0;
   long long frame_every = 0;
+  int threads = 1;
   double max_work = io::kDefaultMaxWork;
   bool json = false, vtk = false;
   CLI::Option *dt_opt = nullptr, *steps_opt = nullptr, *every_opt = nullptr;
@@ -59,6 +61,9 @@ Scene prepared_scene(const RunOptions& o) {
   if (!o.integrator.empty()) scene.integrator = *parse_integrator(o.integrator);
   if (o.dt_opt->count() > 0) scene.dt = o.dt;
   if (o.steps_opt->count() > 0) scene.steps = o.steps;
+  if (scene.self_collision)
+    scene.self_collision->threads =
+        o.threads > 0 ? o.threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   const std::string too_much = io::work_limit_problem(scene, scene.steps, o.max_work);
   if (!too_much.empty()) {
     if (o.steps_opt->count() > 0) throw io::UsageError("--steps: " + too_much);
@@ -204,6 +209,10 @@ Command add_run(CLI::App& app) {
                      ->check(integer_in(1, io::kMaxSteps))
                      ->needs(out);
   sub->add_flag("--vtk", o->vtk, "With --out: write legacy VTK frames as well as OBJ")->needs(out);
+  sub->add_option("--threads", o->threads,
+                  "Threads of the self-collision detection (0 = all cores; default 1); results do not depend on it")
+      ->capture_default_str()
+      ->check(integer_in(0, io::kMaxThreads));
   sub->add_option("--max-work", o->max_work,
                   "Largest work of the run, steps x elements per step (particles, springs, particle-plane tests, "
                   "self-collision triangles)")

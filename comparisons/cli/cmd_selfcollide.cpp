@@ -1,4 +1,4 @@
-// tecido selfcollide --mesh FILE.obj [--engines core,core-brute,...] --json
+// tecido selfcollide --mesh FILE.obj [--to END.obj] [--engines core,core-brute,...] [--threads N] --json
 // Prints {"<engine>":[[i,j],...], ...}: the intersecting pairs of triangles sharing no vertex,
 // i < j, in the OBJ's triangle numbering (comparisons/io/obj_mesh.h), per engine, in the order
 // the engines are named; null when an engine cannot answer. The engines that test every pair
@@ -15,9 +15,11 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cstdio>
 #include <iostream>
 #include <memory>
+#include <thread>
 
 namespace tecido::cli {
 
@@ -44,6 +46,7 @@ void print_engine(const std::string& name, const std::optional<std::vector<Trian
 Command add_selfcollide(CLI::App& app) {
   struct Opts {
     std::string mesh, to, engines;
+    int threads = 0;
     bool json = false;
   };
   auto o = std::make_shared<Opts>();
@@ -57,9 +60,14 @@ Command add_selfcollide(CLI::App& app) {
                   "Second frame of the same mesh (same faces): the vertex-face and edge-edge pairs touching while it "
                   "moves linearly from --mesh to --to, {\"<engine>\":{\"vertex_face\":[[v,f]],\"edge_edge\":"
                   "[[[a,b],[c,d]]]}}; engines core (exact answer), core-brute (core's test on every pair), exact");
+  sub->add_option("--threads", o->threads,
+                  "Worker threads of core's continuous detection and the referee's confirmation (with --to; 0 = all "
+                  "cores); results do not depend on it")
+      ->check(integer_in(0, io::kMaxThreads));
   sub->add_flag("--json", o->json, "Print JSON (the only output format; kept for the contract)");
   return [o]() {
-    if (!o->to.empty()) return run_selfcollide_continuous(o->mesh, o->to, o->engines);
+    const int threads = o->threads > 0 ? o->threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+    if (!o->to.empty()) return run_selfcollide_continuous(o->mesh, o->to, o->engines, threads);
     std::vector<std::string> known;
     for (const auto& e : self_collision_engines()) known.push_back(e.name);
     const auto names = parse_engine_list(o->engines, known, "self-collision");

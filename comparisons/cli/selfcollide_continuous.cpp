@@ -5,9 +5,11 @@
 #include "comparisons/io/obj_mesh.h"
 #include "comparisons/engines/continuous_self_collision_engines.h"
 
+#include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
 #include <iostream>
+#include <iterator>
 
 namespace tecido::cli {
 
@@ -28,23 +30,41 @@ void check_same_mesh(const io::ObjMesh& a, const io::ObjMesh& b, const std::stri
                                std::to_string(a.triangle_line[k]) + "): the frames must have the same faces");
 }
 
-nlohmann::ordered_json contacts_json(const ContinuousContacts& c) {
-  nlohmann::ordered_json vf = nlohmann::ordered_json::array(), ee = nlohmann::ordered_json::array();
-  for (const auto& p : c.vertex_face) vf.push_back({p[0], p[1]});
-  for (const auto& p : c.edge_edge) ee.push_back({{p[0][0], p[0][1]}, {p[1][0], p[1][1]}});
-  return {{"vertex_face", std::move(vf)}, {"edge_edge", std::move(ee)}};
+/// `{"vertex_face":[[v,f],...],"edge_edge":[[[a,b],[c,d]],...]}`, written as it goes (no
+/// document of it is built: a large mesh's answer has hundreds of thousands of pairs).
+void print_contacts(const ContinuousContacts& c) {
+  std::string chunk = "{\"vertex_face\":[";
+  const auto spill = [&chunk] {
+    if (chunk.size() < (1u << 16)) return;
+    std::cout << chunk;
+    chunk.clear();
+  };
+  for (std::size_t k = 0; k < c.vertex_face.size(); ++k) {
+    fmt::format_to(std::back_inserter(chunk), "{}[{},{}]", k ? "," : "", c.vertex_face[k][0], c.vertex_face[k][1]);
+    spill();
+  }
+  chunk += "],\"edge_edge\":[";
+  for (std::size_t k = 0; k < c.edge_edge.size(); ++k) {
+    const EdgeEdgePair& p = c.edge_edge[k];
+    fmt::format_to(std::back_inserter(chunk), "{}[[{},{}],[{},{}]]", k ? "," : "", p[0][0], p[0][1], p[1][0], p[1][1]);
+    spill();
+  }
+  std::cout << chunk << "]}";
 }
 
 }  // namespace
 
-int run_selfcollide_continuous(const std::string& start, const std::string& end, const std::string& engines) {
+int run_selfcollide_continuous(const std::string& start, const std::string& end, const std::string& engines, int threads) {
   const auto names = parse_engine_list(engines, continuous_self_collision_engines(), "continuous self-collision");
   const io::ObjMesh m0 = io::load_obj_mesh(start), m1 = io::load_obj_mesh(end);
   check_same_mesh(m0, m1, start, end);
   for (const auto& n : names) check_continuous_self_collision_size(n, m0.triangles.size(), start);
-  nlohmann::ordered_json out = nlohmann::ordered_json::object();
-  for (const auto& n : names) out[n] = contacts_json(continuous_self_collision_contacts(n, m0.vertices, m1.vertices, m0.triangles));
-  std::cout << out.dump() << "\n";
+  std::cout << "{";
+  for (std::size_t k = 0; k < names.size(); ++k) {
+    std::cout << (k ? "," : "") << nlohmann::json(names[k]).dump() << ":";
+    print_contacts(continuous_self_collision_contacts(names[k], m0.vertices, m1.vertices, m0.triangles, threads));
+  }
+  std::cout << "}\n";
   return 0;
 }
 

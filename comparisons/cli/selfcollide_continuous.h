@@ -13,7 +13,10 @@
 
 namespace tecido::cli {
 
-/// Runs the command; returns the exit code. Throws io::InputError / io::UsageError on bad input.
-int run_selfcollide_continuous(const std::string& start, const std::string& end, const std::string& engines);
+/// Runs the command on `threads` threads (>= 1: core's detection and the referee's confirmation
+/// of its candidates; the output does not depend on it); returns the exit code. Throws
+/// io::InputError / io::UsageError on bad input.
+int run_selfcollide_continuous(const std::string& start, const std::string& end, const std::string& engines,
+                               int threads = 1);
 
 }  // namespace tecido::cli

@@ -31,13 +31,17 @@ void check_continuous_self_collision_size(const std::string& engine, std::size_t
 
 ContinuousContacts continuous_self_collision_contacts(const std::string& name, const std::vector<Vec3>& x0,
                                                       const std::vector<Vec3>& x1,
-                                                      const std::vector<std::array<int, 3>>& triangles) {
+                                                      const std::vector<std::array<int, 3>>& triangles,
+                                                      int threads) {
   if (name == "core-brute") return continuous_self_collision_brute(x0, x1, triangles);
   if (name == "exact") return continuous_self_collision_brute(x0, x1, triangles, &exact_continuous_test);
   if (name != "core") throw std::invalid_argument("no continuous self-collision engine \"" + name + "\"");
   ContinuousSelfCollisionDetector det(triangles, x0);
+  det.set_threads(threads);
   const ContinuousContacts& candidates = det.detect(x0, x1);
-  return filter_contacts(candidates, x0, x1, triangles, [](const CcdQuery& q) { return reference::exact_ccd(q).hit; });
+  // The referee's filter decides nearly every candidate; exact arithmetic only where it cannot
+  // (reference::exact_ccd_hit: whether, not when).
+  return filter_contacts(candidates, x0, x1, triangles, &reference::exact_ccd_hit, threads);
 }
 
 }  // namespace tecido

@@ -32,9 +32,12 @@ const std::vector<std::string>& continuous_self_collision_engines();
 void check_continuous_self_collision_size(const std::string& engine, std::size_t triangles, const std::string& mesh,
                                           const std::string& option = "--engines");
 
-/// Engine `name`'s contacts (std::invalid_argument for an unknown name).
+/// Engine `name`'s contacts (std::invalid_argument for an unknown name). `threads` (>= 1) is how
+/// many threads core's detection and the referee's confirmation of its candidates use; the answer
+/// does not depend on it.
 ContinuousContacts continuous_self_collision_contacts(const std::string& name, const std::vector<Vec3>& x0,
                                                       const std::vector<Vec3>& x1,
-                                                      const std::vector<std::array<int, 3>>& triangles);
+                                                      const std::vector<std::array<int, 3>>& triangles,
+                                                      int threads = 1);
 
 }  // namespace tecido

@@ -36,6 +36,25 @@ class Tokens {
   throw InputError(file, "line " + std::to_string(line_no), problem);
 }
 
+/// A token as a NUL-terminated string for strtod / strtoll: in a buffer on the stack when it
+/// fits (every number of a real mesh), so that a large file's parse allocates nothing per token.
+class TokenText {
+ public:
+  explicit TokenText(std::string_view tok) {
+    if (tok.size() < sizeof(small_)) {
+      tok.copy(small_, tok.size());
+      small_[tok.size()] = '\0';
+    } else {
+      large_.assign(tok);
+    }
+  }
+  const char* c_str() const { return large_.empty() ? small_ : large_.c_str(); }
+
+ private:
+  char small_[64];
+  std::string large_;
+};
+
 /// The rest of a `v x y z [w]` line.
 Vec3 parse_vertex(Tokens& tokens, const std::string& file, int line_no) {
   Vec3 p = Vec3::Zero();
@@ -43,11 +62,13 @@ Vec3 parse_vertex(Tokens& tokens, const std::string& file, int line_no) {
   int k = 0;
   for (; tokens.next(tok); ++k) {
     if (k == 4) fail(file, line_no, "a vertex has at most four numbers (v x y z [w])");
-    const std::string s(tok);
+    const TokenText text(tok);
+    const char* s = text.c_str();
     char* end = nullptr;
-    const double d = std::strtod(s.c_str(), &end);
-    if (end == s.c_str() || *end != '\0') fail(file, line_no, "\"" + s + "\" is not a number");
-    if (!std::isfinite(d)) fail(file, line_no, std::string(k < 3 ? "coordinate" : "weight") + " \"" + s + "\" is not finite");
+    const double d = std::strtod(s, &end);
+    if (end == s || *end != '\0') fail(file, line_no, "\"" + std::string(s) + "\" is not a number");
+    if (!std::isfinite(d))
+      fail(file, line_no, std::string(k < 3 ? "coordinate" : "weight") + " \"" + std::string(s) + "\" is not finite");
     if (k < 3) p[k] = d;
   }
   if (k < 3) fail(file, line_no, "a vertex needs three coordinates (v x y z)");
@@ -57,17 +78,19 @@ Vec3 parse_vertex(Tokens& tokens, const std::string& file, int line_no) {
 /// One corner of a face (`i`, `i/t`, `i//n`, `i/t/n`): the 1-based index, a negative one
 /// resolved against the `vertices` read so far (positive ones may name later vertices).
 long long parse_corner(std::string_view tok, std::size_t vertices, const std::string& file, int line_no) {
-  const std::string s(tok.substr(0, tok.find('/')));
+  const std::string_view index = tok.substr(0, tok.find('/'));
+  const TokenText text(index);
+  const char* s = text.c_str();
   char* end = nullptr;
   errno = 0;
-  const long long i = std::strtoll(s.c_str(), &end, 10);
-  if (s.empty() || end == s.c_str() || *end != '\0' || errno == ERANGE)
+  const long long i = std::strtoll(s, &end, 10);
+  if (index.empty() || end == s || *end != '\0' || errno == ERANGE)
     fail(file, line_no, "\"" + std::string(tok) + "\" is not a vertex index");
   if (i == 0) fail(file, line_no, "vertex index 0 (OBJ indices start at 1)");
   if (i > 0) return i;
   const long long resolved = static_cast<long long>(vertices) + 1 + i;
   if (resolved < 1)
-    fail(file, line_no, "vertex " + s + " names a missing vertex (only " + std::to_string(vertices) + " defined so far)");
+    fail(file, line_no, "vertex " + std::string(s) + " names a missing vertex (only " + std::to_string(vertices) + " defined so far)");
   return resolved;
 }
 

@@ -5,6 +5,7 @@
 #include "core/geometry/ccd/batch/stages.h"
 #include "core/geometry/ccd/pipeline.h"
 #include "core/geometry/outward_float.h"
+#include "core/platform/parallel_parts.h"
 #include "core/simd/float_lanes.h"
 
 #include <algorithm>
@@ -39,6 +40,9 @@ std::vector<MeshEdge> mesh_edges(const std::vector<std::array<int, 3>>& triangle
 
 /// Pairs queued before the batched first stages run on them.
 constexpr int kChunk = 256;
+
+/// Fewest triangle and feature pairs worth a thread of their own.
+constexpr std::size_t kMinShare = 4096;
 
 CcdQuery query_of(CcdKind kind, const std::array<int, 4>& points, const std::vector<Vec3>& x0, const std::vector<Vec3>& x1) {
   CcdQuery q;
@@ -163,44 +167,45 @@ bool ContinuousSelfCollisionDetector::run(const CcdQuery& q) const {
   return test_ == &default_test ? ccd_after_boxes(q).hit : test_(q).hit;
 }
 
-void ContinuousSelfCollisionDetector::sift(CcdKind kind, const std::array<int, 4>* points, const std::uint64_t* keys,
-                                          int n, const std::vector<Vec3>& x0, const std::vector<Vec3>& x1) {
+void ContinuousSelfCollisionDetector::sift(Worker& w, CcdKind kind, const std::array<int, 4>* points,
+                                          const std::uint64_t* keys, int n, const std::vector<Vec3>& x0,
+                                          const std::vector<Vec3>& x1) {
   static_assert(sizeof(VertexFrames) == 8 * sizeof(double), "a vertex's frames are read as 8 doubles");
   const double* base = frames_.empty() ? nullptr : frames_.front().x0;
   // The cubic verdict is core's test's own stage: a custom test gets the box stages only.
   const bool cubic = test_ == &default_test;
-  std::vector<std::uint64_t>& found = kind == CcdKind::VertexFace ? vf_keys_ : ee_keys_;
-  verdict_.resize(kChunk);
+  std::vector<std::uint64_t>& found = kind == CcdKind::VertexFace ? w.vf_keys : w.ee_keys;
+  w.verdict.resize(kChunk);
   for (int first = 0; first < n; first += kChunk) {
     const int m = std::min(kChunk, n - first);
-    ccd_batch_first_stages(kind, base, base + 3, 8, points + first, m, cubic, verdict_.data(), width_);
+    ccd_batch_first_stages(kind, base, base + 3, 8, points + first, m, cubic, w.verdict.data(), width_);
     for (int k = 0; k < m; ++k) {
-      const std::uint8_t v = verdict_[k];
+      const std::uint8_t v = w.verdict[k];
       if (v & kCcdBoxesDisjoint) continue;
-      ++tests_;  // the pair passed the box stages: handed to the test
+      ++w.tests;  // the pair passed the box stages: handed to the test
       if (v & (kCcdCubicMiss | kCcdRootMiss)) continue;
       if ((v & kCcdRootHit) || run(query_of(kind, points[first + k], x0, x1))) found.push_back(keys[first + k]);
     }
   }
 }
 
-void ContinuousSelfCollisionDetector::push(CcdKind kind, const std::array<int, 4>& points, std::uint64_t key, bool keep,
-                                          const std::vector<Vec3>& x0, const std::vector<Vec3>& x1) {
+void ContinuousSelfCollisionDetector::push(Worker& w, CcdKind kind, const std::array<int, 4>& points, std::uint64_t key,
+                                          bool keep, const std::vector<Vec3>& x0, const std::vector<Vec3>& x1) {
   // Written whether kept or not, counted only when kept: no branch on the (unpredictable)
   // outcome of the box test that decided `keep`.
-  Pending& p = pending_[kind == CcdKind::VertexFace ? 0 : 1];
+  Pending& p = w.pending[kind == CcdKind::VertexFace ? 0 : 1];
   p.points[p.count] = points;
   p.keys[p.count] = key;
   p.count += keep ? 1 : 0;
   if (p.count < kChunk) return;
-  sift(kind, p.points.data(), p.keys.data(), kChunk, x0, x1);
+  sift(w, kind, p.points.data(), p.keys.data(), kChunk, x0, x1);
   p.count = 0;
 }
 
-void ContinuousSelfCollisionDetector::flush(const std::vector<Vec3>& x0, const std::vector<Vec3>& x1) {
+void ContinuousSelfCollisionDetector::flush(Worker& w, const std::vector<Vec3>& x0, const std::vector<Vec3>& x1) {
   for (int kind = 0; kind < 2; ++kind) {
-    Pending& p = pending_[kind];
-    sift(kind == 0 ? CcdKind::VertexFace : CcdKind::EdgeEdge, p.points.data(), p.keys.data(), p.count, x0, x1);
+    Pending& p = w.pending[kind];
+    sift(w, kind == 0 ? CcdKind::VertexFace : CcdKind::EdgeEdge, p.points.data(), p.keys.data(), p.count, x0, x1);
     p.count = 0;
   }
 }
@@ -226,7 +231,8 @@ bool ContinuousSelfCollisionDetector::overlap(const FloatBox& a, const FloatBox&
   return o == 0xFu;
 }
 
-void ContinuousSelfCollisionDetector::test_pair(int i, int j, const std::vector<Vec3>& x0, const std::vector<Vec3>& x1) {
+void ContinuousSelfCollisionDetector::test_pair(Worker& w, int i, int j, const std::vector<Vec3>& x0,
+                                               const std::vector<Vec3>& x1) {
   const TriangleRecord* r[2] = {&records_[i], &records_[j]};
   const int id[2] = {i, j};
   const FloatBox* boxes = boxes_.data();
@@ -244,7 +250,7 @@ void ContinuousSelfCollisionDetector::test_pair(int i, int j, const std::vector<
     for (int k = 0; k < 3; ++k) {
       const int v = o.v[k];
       if (!((o.owns_vertex >> k) & 1u) || v == f.v[0] || v == f.v[1] || v == f.v[2]) continue;
-      push(CcdKind::VertexFace, {v, f.v[0], f.v[1], f.v[2]}, pair_key(v, id[1 - side]),
+      push(w, CcdKind::VertexFace, {v, f.v[0], f.v[1], f.v[2]}, pair_key(v, id[1 - side]),
            overlap(corner[side][k], tri[1 - side]), x0, x1);
     }
   }
@@ -269,36 +275,60 @@ void ContinuousSelfCollisionDetector::test_pair(int i, int j, const std::vector<
       const int p0 = std::min(a0, a1), p1 = std::max(a0, a1), q0 = std::min(b0, b1), q1 = std::max(b0, b1);
       const std::array<int, 4> points = first ? std::array<int, 4>{p0, p1, q0, q1} : std::array<int, 4>{q0, q1, p0, p1};
       const std::uint64_t key = first ? pair_key(r[0]->edge[a], r[1]->edge[b]) : pair_key(r[1]->edge[b], r[0]->edge[a]);
-      push(CcdKind::EdgeEdge, points, key, overlap(ea, eb), x0, x1);
+      push(w, CcdKind::EdgeEdge, points, key, overlap(ea, eb), x0, x1);
     }
   }
 }
 
-void ContinuousSelfCollisionDetector::sift_neighbours(const std::vector<Vec3>& x0, const std::vector<Vec3>& x1) {
+void ContinuousSelfCollisionDetector::sift_neighbours(Worker& w, int kind, std::size_t begin, std::size_t end,
+                                                     const std::vector<Vec3>& x0, const std::vector<Vec3>& x1) {
   const FloatBox* boxes = boxes_.data();
-  for (int kind = 0; kind < 2; ++kind) {
-    const std::vector<std::array<int, 4>>& points = kind == 0 ? near_vf_points_ : near_ee_points_;
-    const std::vector<std::uint64_t>& keys = kind == 0 ? near_vf_keys_ : near_ee_keys_;
-    for (std::size_t k = 0; k < points.size(); ++k) {
-      if (k + 16 < points.size())
-        for (int c = 0; c < 4; ++c) __builtin_prefetch(&boxes[points[k + 16][c]]);
-      const std::array<int, 4>& p = points[k];
-      if (kind == 0) {  // the vertex against the face
-        const FloatBox face = merged(merged(boxes[p[1]], boxes[p[2]]), boxes[p[3]]);
-        push(CcdKind::VertexFace, p, keys[k], overlap(boxes[p[0]], face), x0, x1);
-      } else {  // edge against edge
-        push(CcdKind::EdgeEdge, p, keys[k], overlap(merged(boxes[p[0]], boxes[p[1]]), merged(boxes[p[2]], boxes[p[3]])),
-             x0, x1);
-      }
+  const std::vector<std::array<int, 4>>& points = kind == 0 ? near_vf_points_ : near_ee_points_;
+  const std::vector<std::uint64_t>& keys = kind == 0 ? near_vf_keys_ : near_ee_keys_;
+  for (std::size_t k = begin; k < end; ++k) {
+    if (k + 16 < end)
+      for (int c = 0; c < 4; ++c) __builtin_prefetch(&boxes[points[k + 16][c]]);
+    const std::array<int, 4>& p = points[k];
+    if (kind == 0) {  // the vertex against the face
+      const FloatBox face = merged(merged(boxes[p[1]], boxes[p[2]]), boxes[p[3]]);
+      push(w, CcdKind::VertexFace, p, keys[k], overlap(boxes[p[0]], face), x0, x1);
+    } else {  // edge against edge
+      push(w, CcdKind::EdgeEdge, p, keys[k], overlap(merged(boxes[p[0]], boxes[p[1]]), merged(boxes[p[2]], boxes[p[3]])),
+           x0, x1);
     }
   }
+}
+
+void ContinuousSelfCollisionDetector::work(Worker& w, int part, int parts, const std::vector<Vec3>& x0,
+                                          const std::vector<Vec3>& x1) {
+  w.vf_keys.clear();
+  w.ee_keys.clear();
+  w.tests = 0;
+  const auto share = [&](std::size_t n, int k) { return share_begin(n, k, parts); };
+  // The pairs' records and their corners' boxes are scattered: fetch them ahead (records 16
+  // pairs ahead, the boxes of the corners they name 8 ahead).
+  const FloatBox* boxes = boxes_.data();
+  const std::size_t np = tri_pairs_.size(), end = share(np, part + 1);
+  for (std::size_t k = share(np, part); k < end; ++k) {
+    if (k + 16 < end) {
+      __builtin_prefetch(&records_[tri_pairs_[k + 16][0]]);
+      __builtin_prefetch(&records_[tri_pairs_[k + 16][1]]);
+    }
+    if (k + 8 < end) {
+      for (int side = 0; side < 2; ++side)
+        for (int c = 0; c < 3; ++c) __builtin_prefetch(&boxes[records_[tri_pairs_[k + 8][side]].v[c]]);
+    }
+    test_pair(w, tri_pairs_[k][0], tri_pairs_[k][1], x0, x1);
+  }
+  for (int kind = 0; kind < 2; ++kind) {
+    const std::size_t n = (kind == 0 ? near_vf_points_ : near_ee_points_).size();
+    sift_neighbours(w, kind, share(n, part), share(n, part + 1), x0, x1);
+  }
+  flush(w, x0, x1);
 }
 
 const ContinuousContacts& ContinuousSelfCollisionDetector::detect(const std::vector<Vec3>& x0, const std::vector<Vec3>& x1) {
-  vf_keys_.clear();
-  ee_keys_.clear();
   tri_pairs_.clear();
-  tests_ = 0;
   frames_.resize(x0.size());
   boxes_.resize(x0.size());
   FloatBox* boxes = boxes_.data();
@@ -322,24 +352,29 @@ const ContinuousContacts& ContinuousSelfCollisionDetector::detect(const std::vec
   for (std::size_t v = 0; v < x1.size(); ++v) moved_[v] = x1[v] - mean;
   bvh_.refit(x0, moved_);
   bvh_.moving_pairs(tri_pairs_);
-  // The pairs' records and their corners' boxes are scattered: fetch them ahead (records 16
-  // pairs ahead, the boxes of the corners they name 8 ahead).
-  const std::size_t np = tri_pairs_.size();
-  for (std::size_t k = 0; k < np; ++k) {
-    if (k + 16 < np) {
-      __builtin_prefetch(&records_[tri_pairs_[k + 16][0]]);
-      __builtin_prefetch(&records_[tri_pairs_[k + 16][1]]);
-    }
-    if (k + 8 < np) {
-      for (int side = 0; side < 2; ++side)
-        for (int c = 0; c < 3; ++c) __builtin_prefetch(&boxes[records_[tri_pairs_[k + 8][side]].v[c]]);
-    }
-    test_pair(tri_pairs_[k][0], tri_pairs_[k][1], x0, x1);
-  }
-  sift_neighbours(x0, x1);
-  flush(x0, x1);
+  run_workers(x0, x1);
   emit_sorted();
   return out_;
+}
+
+void ContinuousSelfCollisionDetector::run_workers(const std::vector<Vec3>& x0, const std::vector<Vec3>& x1) {
+  // A thread is started per share: below a few thousand pairs a share costs less than a start.
+  const std::size_t work_items = tri_pairs_.size() + near_vf_points_.size() + near_ee_points_.size();
+  const int parts = static_cast<int>(std::min<std::size_t>(static_cast<std::size_t>(threads_), 1 + work_items / kMinShare));
+  parts_ = parts;
+  if (static_cast<int>(workers_.size()) < parts) workers_.resize(static_cast<std::size_t>(parts));
+  run_parts(parts, [&](int part) { work(workers_[static_cast<std::size_t>(part)], part, parts, x0, x1); });
+  // Each primitive pair is tested by one worker: the merged keys, sorted, are the same pairs
+  // whatever the number of parts.
+  vf_keys_.clear();
+  ee_keys_.clear();
+  tests_ = 0;
+  for (int part = 0; part < parts; ++part) {
+    const Worker& w = workers_[part];
+    vf_keys_.insert(vf_keys_.end(), w.vf_keys.begin(), w.vf_keys.end());
+    ee_keys_.insert(ee_keys_.end(), w.ee_keys.begin(), w.ee_keys.end());
+    tests_ += w.tests;
+  }
 }
 
 void ContinuousSelfCollisionDetector::emit_sorted() {
@@ -363,12 +398,26 @@ ContinuousContacts continuous_self_collision(const std::vector<Vec3>& x0, const 
 
 ContinuousContacts filter_contacts(const ContinuousContacts& contacts, const std::vector<Vec3>& x0,
                                    const std::vector<Vec3>& x1, const std::vector<std::array<int, 3>>& triangles,
-                                   const std::function<bool(const CcdQuery&)>& keep) {
+                                   const std::function<bool(const CcdQuery&)>& keep, int threads) {
+  const std::size_t nvf = contacts.vertex_face.size(), n = nvf + contacts.edge_edge.size();
+  std::vector<char> kept(n, 0);
+  const int parts = std::max(1, threads);
+  run_parts(parts, [&](int part) {
+    for (std::size_t k = share_begin(n, part, parts); k < share_begin(n, part + 1, parts); ++k) {
+      if (k < nvf) {
+        const VertexFacePair& vf = contacts.vertex_face[k];
+        kept[k] = keep(vertex_face_query(x0, x1, vf[0], triangles[vf[1]]));
+      } else {
+        const EdgeEdgePair& ee = contacts.edge_edge[k - nvf];
+        kept[k] = keep(edge_edge_query(x0, x1, ee[0], ee[1]));
+      }
+    }
+  });
   ContinuousContacts out;
-  for (const auto& vf : contacts.vertex_face)
-    if (keep(vertex_face_query(x0, x1, vf[0], triangles[vf[1]]))) out.vertex_face.push_back(vf);
-  for (const auto& ee : contacts.edge_edge)
-    if (keep(edge_edge_query(x0, x1, ee[0], ee[1]))) out.edge_edge.push_back(ee);
+  for (std::size_t k = 0; k < nvf; ++k)
+    if (kept[k]) out.vertex_face.push_back(contacts.vertex_face[k]);
+  for (std::size_t k = nvf; k < n; ++k)
+    if (kept[k]) out.edge_edge.push_back(contacts.edge_edge[k - nvf]);
   return out;
 }
 

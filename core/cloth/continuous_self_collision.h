@@ -88,6 +88,15 @@ class ContinuousSelfCollisionDetector {
   /// it; tests compare.
   void set_simd_width(int width) { width_ = width; }
 
+  /// Threads detect() runs the feature pairs on (>= 1; default 1): the tree pairs and the
+  /// neighbour pairs are cut into that many contiguous shares, one per thread, and the pairs
+  /// found are merged by sorting, so the output and last_tests() do not depend on it. The tree's
+  /// traversal stays on the calling thread.
+  void set_threads(int threads) { threads_ = threads < 1 ? 1 : threads; }
+  /// Shares the last detect() ran (at most the threads asked; fewer on small work, where
+  /// starting a thread costs more than its share: one per 4096 tree and neighbour pairs).
+  int last_parts() const { return parts_; }
+
  private:
   /// A triangle and the features it owns (the first triangle that has a vertex or an edge owns
   /// it): bit k of owns_vertex for corner v[k], bit k of owns_edge for edge k, (v[k], v[k+1 mod 3]),
@@ -117,19 +126,34 @@ class ContinuousSelfCollisionDetector {
     std::array<std::uint64_t, 256> keys;
     int count = 0;
   };
+  /// One worker's state (a thread's, when detect() runs on several): its queues, the first
+  /// stages' verdicts, its count of tests and the keys of the pairs it found.
+  struct Worker {
+    Pending pending[2];  ///< [0] vertex-face, [1] edge-edge
+    std::vector<std::uint8_t> verdict;
+    std::size_t tests = 0;
+    std::vector<std::uint64_t> vf_keys;  ///< pairs found: v << 32 | f
+    std::vector<std::uint64_t> ee_keys;  ///< pairs found: edge id << 32 | edge id, ids ascending
+  };
+  /// Share `part` of `parts` of the work (tree pairs and neighbour pairs), flushed.
+  void work(Worker& w, int part, int parts, const std::vector<Vec3>& x0, const std::vector<Vec3>& x1);
   /// The feature pairs of tree pair (i, j) whose swept boxes overlap, queued.
-  void test_pair(int i, int j, const std::vector<Vec3>& x0, const std::vector<Vec3>& x1);
+  void test_pair(Worker& w, int i, int j, const std::vector<Vec3>& x0, const std::vector<Vec3>& x1);
   /// Queues one primitive pair when `keep`; runs the queue when it is full.
-  void push(CcdKind kind, const std::array<int, 4>& points, std::uint64_t key, bool keep, const std::vector<Vec3>& x0,
-            const std::vector<Vec3>& x1);
-  /// Runs both queues.
-  void flush(const std::vector<Vec3>& x0, const std::vector<Vec3>& x1);
-  /// The first stages on n queued pairs, then the test on those they leave open; keys of
-  /// pairs the test accepts go to vf_keys_ / ee_keys_.
-  void sift(CcdKind kind, const std::array<int, 4>* points, const std::uint64_t* keys, int n,
+  void push(Worker& w, CcdKind kind, const std::array<int, 4>& points, std::uint64_t key, bool keep,
             const std::vector<Vec3>& x0, const std::vector<Vec3>& x1);
-  /// Queues the listed pairs of features of neighbouring owners whose swept boxes overlap.
-  void sift_neighbours(const std::vector<Vec3>& x0, const std::vector<Vec3>& x1);
+  /// Runs both queues.
+  void flush(Worker& w, const std::vector<Vec3>& x0, const std::vector<Vec3>& x1);
+  /// The first stages on n queued pairs, then the test on those they leave open; keys of
+  /// pairs the test accepts go to the worker's vf_keys / ee_keys.
+  void sift(Worker& w, CcdKind kind, const std::array<int, 4>* points, const std::uint64_t* keys, int n,
+            const std::vector<Vec3>& x0, const std::vector<Vec3>& x1);
+  /// Queues the listed pairs [begin, end) of features of neighbouring owners (kind 0
+  /// vertex-face, 1 edge-edge) whose swept boxes overlap.
+  void sift_neighbours(Worker& w, int kind, std::size_t begin, std::size_t end, const std::vector<Vec3>& x0,
+                       const std::vector<Vec3>& x1);
+  /// work() on threads_ workers (the calling thread one of them); merges their keys and counts.
+  void run_workers(const std::vector<Vec3>& x0, const std::vector<Vec3>& x1);
   /// Fills the near_ lists with the feature pairs of triangles that share a vertex.
   void list_neighbour_features(int vertex_count);
   /// The test's answer on a query whose box stages were passed.
@@ -150,12 +174,11 @@ class ContinuousSelfCollisionDetector {
   /// | f; edge-edge: ids ascending), in pair order.
   std::vector<std::array<int, 4>> near_vf_points_, near_ee_points_;
   std::vector<std::uint64_t> near_vf_keys_, near_ee_keys_;
-  Pending pending_[2];                ///< [0] vertex-face, [1] edge-edge
-  std::vector<std::uint8_t> verdict_;  ///< the first stages' verdicts of one chunk
+  std::vector<Worker> workers_;        ///< one per thread, kept across calls
   int width_ = 0;
+  int threads_ = 1, parts_ = 1;
   std::size_t tests_ = 0;
-  std::vector<std::uint64_t> vf_keys_;  ///< pairs found: v << 32 | f
-  std::vector<std::uint64_t> ee_keys_;  ///< pairs found: edge id << 32 | edge id, ids ascending
+  std::vector<std::uint64_t> vf_keys_, ee_keys_;  ///< all workers' keys, merged
   ContinuousContacts out_;
 };
 
@@ -164,9 +187,11 @@ ContinuousContacts continuous_self_collision(const std::vector<Vec3>& x0, const 
                                              const std::vector<std::array<int, 3>>& triangles, CcdTest test = nullptr);
 
 /// The pairs of `contacts` for which keep(query) is true, query built from x0, x1 as above:
-/// e.g. to confirm core's candidates with an exact referee. Order kept.
+/// e.g. to confirm core's candidates with an exact referee. Order kept. With threads > 1 the
+/// pairs are cut into that many contiguous shares, one per thread (keep must be safe to call
+/// concurrently); the output is the same.
 ContinuousContacts filter_contacts(const ContinuousContacts& contacts, const std::vector<Vec3>& x0,
                                    const std::vector<Vec3>& x1, const std::vector<std::array<int, 3>>& triangles,
-                                   const std::function<bool(const CcdQuery&)>& keep);
+                                   const std::function<bool(const CcdQuery&)>& keep, int threads = 1);
 
 }  // namespace tecido

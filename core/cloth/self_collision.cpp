@@ -1,6 +1,7 @@
 #include "core/cloth/self_collision.h"
 
 #include "core/geometry/tri_tri_intersect.h"
+#include "core/platform/parallel_parts.h"
 
 #include <algorithm>
 
@@ -46,10 +47,35 @@ const std::vector<TrianglePair>& SelfCollisionDetector::detect(const std::vector
   candidates_.clear();
   bvh_.overlapping_pairs(candidates_);
   pairs_.clear();
-  const std::size_t nc = candidates_.size();
-  std::size_t k = 0;
+  // A thread is started per share: below a few thousand candidates a share costs less than a start.
+  const int parts = static_cast<int>(std::min<std::size_t>(static_cast<std::size_t>(threads_), 1 + candidates_.size() / 4096));
+  parts_ = parts;
+  if (parts == 1) {
+    narrow_phase(x, 0, candidates_.size(), pairs_);
+  } else {
+    // Contiguous shares of the candidates, one per thread; the pairs found, merged and
+    // sorted, are the same whatever the number of shares.
+    if (static_cast<int>(part_pairs_.size()) < parts) part_pairs_.resize(static_cast<std::size_t>(parts));
+    const std::size_t nc = candidates_.size();
+    run_parts(parts, [&](int part) {
+      std::vector<TrianglePair>& out = part_pairs_[static_cast<std::size_t>(part)];
+      out.clear();
+      narrow_phase(x, share_begin(nc, part, parts), share_begin(nc, part + 1, parts), out);
+    });
+    for (int part = 0; part < parts; ++part)
+      pairs_.insert(pairs_.end(), part_pairs_[static_cast<std::size_t>(part)].begin(),
+                    part_pairs_[static_cast<std::size_t>(part)].end());
+  }
+  std::sort(pairs_.begin(), pairs_.end());
+  return pairs_;
+}
+
+void SelfCollisionDetector::narrow_phase(const std::vector<Vec3>& x, std::size_t begin, std::size_t end,
+                                         std::vector<TrianglePair>& out) const {
+  const std::size_t nc = end;  // candidates [begin, end)
+  std::size_t k = begin;
   // (Vertex offsets 3 * v are 32-bit gather indices: the batch needs fewer than 2^29 vertices.)
-  if (nc >= 8 && test_ == default_tri_tri_test() && tri_tri_reject8_available() &&
+  if (nc - begin >= 8 && test_ == default_tri_tri_test() && tri_tri_reject8_available() &&
       x.size() < (std::size_t{1} << 29)) {
     // Most candidates are mesh neighbours lying wholly on one side of each other's plane. The
     // first step of tri_tri_intersect (p's corners against q's plane, static filter) runs on
@@ -95,16 +121,14 @@ const std::vector<TrianglePair>& SelfCollisionDetector::detect(const std::vector
       }
       for (; keep; keep &= keep - 1) {
         const TrianglePair& c = candidates_[k + static_cast<std::size_t>(__builtin_ctz(keep))];
-        if (tri_tri_intersect(corners(x, tris_[c[0]]), corners(x, tris_[c[1]]))) pairs_.push_back(c);
+        if (tri_tri_intersect(corners(x, tris_[c[0]]), corners(x, tris_[c[1]]))) out.push_back(c);
       }
     }
   }
   for (; k < nc; ++k) {
     const TrianglePair& c = candidates_[k];
-    if (test_(corners(x, tris_[c[0]]), corners(x, tris_[c[1]]))) pairs_.push_back(c);
+    if (test_(corners(x, tris_[c[0]]), corners(x, tris_[c[1]]))) out.push_back(c);
   }
-  std::sort(pairs_.begin(), pairs_.end());
-  return pairs_;
 }
 
 std::vector<TrianglePair> self_collision_pairs(const std::vector<Vec3>& x,

@@ -46,11 +46,24 @@ class SelfCollisionDetector {
   std::size_t last_candidates() const { return candidates_.size(); }
   const std::vector<std::array<int, 3>>& triangles() const { return tris_; }
 
+  /// Threads the narrow phase runs on (>= 1; default 1): the candidates are cut into that many
+  /// contiguous shares, one per thread, and the pairs found merged by sorting, so the output
+  /// does not depend on it. The tree's traversal stays on the calling thread.
+  void set_threads(int threads) { threads_ = threads < 1 ? 1 : threads; }
+  /// Shares the last detect() ran (at most the threads asked; one per 4096 candidates).
+  int last_parts() const { return parts_; }
+
  private:
+  /// Appends to `out` the candidates [begin, end) that intersect, in candidate order.
+  void narrow_phase(const std::vector<Vec3>& x, std::size_t begin, std::size_t end,
+                    std::vector<TrianglePair>& out) const;
+
   std::vector<std::array<int, 3>> tris_;
   TriTriTest test_;
   TriangleBvh bvh_;
   std::vector<TrianglePair> candidates_, pairs_;
+  std::vector<std::vector<TrianglePair>> part_pairs_;  ///< per thread, kept across calls
+  int threads_ = 1, parts_ = 1;
 };
 
 /// One-shot convenience: builds a detector on x and detects once.

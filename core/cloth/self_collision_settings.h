@@ -34,6 +34,9 @@ struct SelfCollisionSettings {
   /// impulse: rounds of detection and impulses per check (each round detects again on the
   /// corrected positions; stops early when a round finds nothing to change).
   int impulse_iterations = 16;
+  /// Threads the detection runs on (not a scene key: `tecido run --threads`); the pairs found do
+  /// not depend on it (SelfCollisionDetector::set_threads, ContinuousSelfCollisionDetector::set_threads).
+  int threads = 1;
 };
 
 /// "none", "gia", "edge1", "edge2", "edge3", "gia+edge3", "impulse".

@@ -16,8 +16,10 @@ SelfCollisionResponder::SelfCollisionResponder(const std::vector<std::array<int,
                                                const std::vector<Vec3>& x_build,
                                                const SelfCollisionSettings& settings)
     : settings_(settings), detector_(triangles, x_build), topo_(build_mesh_topology(vertex_count, triangles)) {
+  detector_.set_threads(settings_.threads);
   if (settings_.detection != SelfCollisionDetection::Continuous) return;
   continuous_ = std::make_unique<ContinuousSelfCollisionDetector>(triangles, x_build);
+  continuous_->set_threads(settings_.threads);
   vertex_tris_ = build_vertex_triangles(vertex_count, triangles);
   x_prev_ = x_build;
 }

@@ -10,6 +10,7 @@
 
 #include <cmath>
 #include <random>
+#include <stdexcept>
 
 namespace tecido::reference {
 namespace {
@@ -132,6 +133,56 @@ TEST(ExactCcdFilter, DeclinesWhatItCannotProve) {
   EXPECT_LT(half.lo, 0.5);
   EXPECT_GT(half.hi, 0.5);
   EXPECT_FALSE(half.toi.has_value());
+}
+
+// exact_ccd_hit answers the hit without the time: the filter's proven verdicts as they stand,
+// the exact path for the rest. On generic queries, near contacts at every scale (proven and
+// declined alike) and the declined cases above, it must be the exact path's hit.
+TEST(ExactCcdHit, IsTheExactPathsHit) {
+  std::mt19937 rng(7);
+  std::uniform_int_distribution<int> ulps(-3, 3);
+  int hits = 0, declined = 0;
+  const auto check = [&](const CcdQuery& q) {
+    const bool expected = exact_ccd_unfiltered(q).hit;
+    EXPECT_EQ(exact_ccd_hit(q), expected);
+    hits += expected;
+    declined += certified_float_ccd(q).kind == Kind::Unproven;
+  };
+  for (int i = 0; i < 1000; ++i) {
+    CcdQuery q;
+    q.kind = i % 2 ? CcdKind::VertexFace : CcdKind::EdgeEdge;
+    for (std::size_t k = 0; k < 4; ++k) {
+      q.x0[k] = random_vec(rng, 1);
+      q.x1[k] = q.x0[k] + random_vec(rng, 0.5);
+    }
+    SCOPED_TRACE(i);
+    check(q);
+  }
+  for (int i = 0; i < 1000; ++i) {
+    const double t = (1 + i % 7) / 8.0;
+    const bool edge = i % 4 >= 2;
+    ccd_cases::Known k =
+        i % 2 ? ccd_cases::vf_translation(
+                    rng, t, edge ? std::array<double, 3>{0, 0.5, 0.5} : std::array<double, 3>{0.25, 0.25, 0.5})
+              : ccd_cases::ee_translation(rng, t, edge ? 1.0 : 0.25, 0.5);
+    const double scale = std::ldexp(1.0, (i % 5 - 2) * 40);
+    for (std::size_t j = 0; j < 4; ++j) {
+      k.q.x0[j] *= scale;
+      k.q.x1[j] *= scale;
+      for (int c = 0; c < 3; ++c) {
+        const int n = ulps(rng);
+        for (int s = 0; s < std::abs(n); ++s) k.q.x1[j][c] = std::nextafter(k.q.x1[j][c], n > 0 ? INFINITY : -INFINITY);
+      }
+    }
+    SCOPED_TRACE(i);
+    check(k.q);
+  }
+  for (const CcdQuery& q : {make(CcdKind::VertexFace, {Vec3(-0.5, 0.25, 0), O, X, Y}, {Vec3(0.5, 0.25, 0), O, X, Y}),
+                            make(CcdKind::VertexFace, {Vec3(0.5, 0, 1), O, X, Y}, {Vec3(0.5, 0, -0.75), O, X, Y})})
+    check(q);
+  EXPECT_GT(hits, 300);     // both answers are exercised
+  EXPECT_GT(declined, 100);  // and so is the exact path behind the filter
+  EXPECT_THROW(exact_ccd_hit(make(CcdKind::EdgeEdge, {Vec3(NAN, 0, 0), O, X, Y}, {O, O, X, Y})), std::domain_error);
 }
 
 }  // namespace

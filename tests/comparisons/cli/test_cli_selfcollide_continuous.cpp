@@ -48,6 +48,48 @@ TEST(CliSelfCollideContinuous, EveryEngineFindsTheHandWorkedContacts) {
   EXPECT_EQ(Json::parse(none.out), Json::parse(R"({"core":{"vertex_face":[],"edge_edge":[]}})"));
 }
 
+// A 48 x 48 grid of spacing 1/32 (4418 triangles) whose vertices move by up to 3/64 in each
+// direction (a pseudo-random pattern in multiples of 1/512, exact in decimal): thousands of
+// crossings, tens of thousands of tree pairs, enough for the detector to run in shares.
+std::string wavy_grid(bool moved) {
+  const int n = 48;
+  std::string obj;
+  for (int r = 0; r < n; ++r)
+    for (int c = 0; c < n; ++c) {
+      const int h = (r * 7919 + c * 104729) % 49 - 24;  // -24 .. 24
+      const double d = moved ? h / 512.0 : 0.0;
+      obj += "v " + std::to_string(c / 32.0 + d) + " " + std::to_string(r / 32.0 - d) + " " +
+             std::to_string(moved ? ((r + c) % 3 - 1) * d : 0.0) + "\n";
+    }
+  for (int r = 0; r + 1 < n; ++r)
+    for (int c = 0; c + 1 < n; ++c) {
+      const int a = r * n + c + 1;
+      obj += "f " + std::to_string(a) + " " + std::to_string(a + 1) + " " + std::to_string(a + n + 1) + "\n";
+      obj += "f " + std::to_string(a) + " " + std::to_string(a + n + 1) + " " + std::to_string(a + n) + "\n";
+    }
+  return obj;
+}
+
+TEST(CliSelfCollideContinuous, SameBytesAtEveryThreadCount) {
+  const auto dir = temp_dir("sc-to-threads");
+  write_text(dir / "a.obj", wavy_grid(false));
+  write_text(dir / "b.obj", wavy_grid(true));
+  const std::string args = "selfcollide --mesh '" + (dir / "a.obj").string() + "' --to '" + (dir / "b.obj").string() + "' --json";
+  const auto one = run_cli(args + " --threads 1");
+  ASSERT_EQ(one.code, 0) << one.err;
+  const Json c = Json::parse(one.out).at("core");
+  EXPECT_GT(c.at("vertex_face").size() + c.at("edge_edge").size(), 100u);
+  for (const char* t : {"2", "3", "0"}) {
+    const auto r = run_cli(args + " --threads " + t);
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_EQ(r.out, one.out) << "--threads " << t;
+  }
+  const auto bad = run_cli(args + " --threads -1");
+  EXPECT_EQ(bad.code, 2);
+  EXPECT_EQ(bad.out, "");
+  EXPECT_NE(bad.err.find("--threads"), std::string::npos) << bad.err;
+}
+
 TEST(CliSelfCollideContinuous, DifferentMeshesExitTwoNamingTheFiles) {
   const auto dir = temp_dir("sc-to-bad");
   const std::string d = dir.string();

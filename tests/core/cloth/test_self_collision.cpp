@@ -102,6 +102,33 @@ TEST(SelfCollision, BroadPhaseMatchesBruteForceOnRandomSoups) {
 // Touching and coplanar configurations, where a box test that rounds inward would lose pairs:
 // triangles of a flat grid duplicated with fresh indices (every copy touches or overlaps its
 // original, coplanar), plus copies shifted to touch only along an edge or at a vertex.
+TEST(SelfCollision, SameAnswerAtEveryThreadCount) {
+  // A 40 x 40 grid jittered by more than half its spacing: neighbouring triangles cross
+  // everywhere, thousands of candidates. Every thread count gives the brute force's pairs, and
+  // the threaded runs must have run in shares.
+  std::mt19937_64 rng(99);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  const int n = 40;
+  std::vector<Vec3> x;
+  std::vector<std::array<int, 3>> tris;
+  for (int r = 0; r < n; ++r)
+    for (int c = 0; c < n; ++c) x.push_back(Vec3(0.05 * c, 0.05 * r, 0.0) + 0.03 * Vec3(u(rng), u(rng), u(rng)));
+  for (int r = 0; r + 1 < n; ++r)
+    for (int c = 0; c + 1 < n; ++c) {
+      const int a = r * n + c;
+      tris.push_back({a, a + 1, a + n + 1});
+      tris.push_back({a, a + n + 1, a + n});
+    }
+  const std::vector<TrianglePair> brute = self_collision_pairs_brute(x, tris);
+  ASSERT_GT(brute.size(), 50u);  // 98 crossing pairs
+  for (int threads : {1, 2, 3, 8}) {
+    SelfCollisionDetector det(tris, x);
+    det.set_threads(threads);
+    for (int round = 0; round < 2; ++round) EXPECT_EQ(det.detect(x), brute) << "threads " << threads;
+    if (threads > 1) EXPECT_GT(det.last_parts(), 1) << "threads " << threads;
+  }
+}
+
 TEST(SelfCollision, TouchingAndCoplanarPairsAreKept) {
   Scene s;
   ClothGridSpec spec;
