@@ -4,12 +4,15 @@
 # (Debian's chromium, driven by puppeteer-core) and checked: no console error, a drawn WebGL
 # canvas, one row per check of report.json, a frame slider that moves the cloth, user text shown
 # as text. Needs build/bin/tecido (built with the viewer bundle). Screenshots: build/browser-tests/screenshots.
-# Skipped, saying why, only when the browser cannot be found (TECIDO_CHROMIUM or /usr/bin/chromium).
+# Skipped, saying why, only when the browser cannot be found (TECIDO_CHROMIUM or /usr/bin/chromium),
+# and never on CI (CI=true: a missing browser or node fails).
 #   BUILD=DIR   the build folder (default build)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 BUILD=${BUILD:-build}
 if ! command -v node >/dev/null; then
+  # On CI scripts/setup.sh installs node: its absence there is a failure, not a skip.
+  if [ "${CI:-}" = "true" ]; then echo "browser tests FAILED (CI=true): node is not installed" >&2; exit 1; fi
   echo "browser tests SKIPPED: node is not installed (bash scripts/setup.sh installs it)" >&2
   exit 0
 fi
