@@ -278,7 +278,9 @@ TEST(ContinuousSelfCollision, SameAnswerAtEveryThreadCount) {
     ContinuousSelfCollisionDetector one(m.tris, m.x);
     const ContinuousContacts expected = one.detect(m.x, x1);
     ASSERT_GT(total(expected), 100u);
-    if (n == 16) EXPECT_EQ(expected, continuous_self_collision_brute(m.x, x1, m.tris));
+    if (n == 16) {
+      EXPECT_EQ(expected, continuous_self_collision_brute(m.x, x1, m.tris));
+    }
     for (int threads : {2, 3, 8}) {
       ContinuousSelfCollisionDetector det(m.tris, m.x);
       det.set_threads(threads);
@@ -286,7 +288,9 @@ TEST(ContinuousSelfCollision, SameAnswerAtEveryThreadCount) {
         EXPECT_EQ(det.detect(m.x, x1), expected) << "n " << n << " threads " << threads << " round " << round;
         EXPECT_EQ(det.last_tests(), one.last_tests());
       }
-      if (n == 40) EXPECT_GT(det.last_parts(), 1) << "threads " << threads;
+      if (n == 40) {
+        EXPECT_GT(det.last_parts(), 1) << "threads " << threads;
+      }
     }
     // Confirmation in shares keeps the order and the pairs.
     const auto keep = [](const CcdQuery& q) { return (q.x0[0].x() + q.x1[1].y()) > 0.6; };

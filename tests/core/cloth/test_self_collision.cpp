@@ -125,7 +125,9 @@ TEST(SelfCollision, SameAnswerAtEveryThreadCount) {
     SelfCollisionDetector det(tris, x);
     det.set_threads(threads);
     for (int round = 0; round < 2; ++round) EXPECT_EQ(det.detect(x), brute) << "threads " << threads;
-    if (threads > 1) EXPECT_GT(det.last_parts(), 1) << "threads " << threads;
+    if (threads > 1) {
+      EXPECT_GT(det.last_parts(), 1) << "threads " << threads;
+    }
   }
 }
 
