@@ -1,0 +1,89 @@
+// README.md's verdict tables are what scripts/readme_tables.py generates from the committed
+// results docs/results/self_contact_experiment.json and docs/results/forced_contact/experiment.json: the script's --check passes on the
+// repository, fails (exit 1, with a diff) when the README's block is edited by hand, and refuses
+// (exit 2, one line naming the file) a README without the block or a result that is not one.
+#include "tests/support/cli_runner.h"
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+namespace tecido {
+namespace {
+
+namespace fs = std::filesystem;
+const fs::path kTablesSourceDir = TECIDO_SOURCE_DIR;
+
+testing::CliResult run_script(const std::string& args, const fs::path& dir) {
+  const std::string cmd = "python3 " + testing::quoted((kTablesSourceDir / "scripts/readme_tables.py").string()) + " " + args +
+                          " >" + testing::quoted((dir / "out").string()) + " 2>" + testing::quoted((dir / "err").string());
+  const int status = std::system(cmd.c_str());
+  testing::CliResult r;
+  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+  r.out = testing::slurp(dir / "out");
+  r.err = testing::slurp(dir / "err");
+  return r;
+}
+
+std::string result_arg() { return "--result " + testing::quoted((kTablesSourceDir / "docs/results/self_contact_experiment.json").string()); }
+
+TEST(ReadmeTables, TheReadmeQuotesTheCommittedResult) {
+  const fs::path dir = testing::temp_dir("readme-tables-check");
+  const auto r = run_script("--check", dir);
+  EXPECT_EQ(r.code, 0) << r.err;
+  const std::string readme = testing::slurp(kTablesSourceDir / "README.md");
+  EXPECT_NE(readme.find("<!-- self-contact-verdicts:begin -->"), std::string::npos);
+  EXPECT_NE(readme.find("docs/results/self_contact_experiment.json"), std::string::npos);
+  EXPECT_NE(readme.find("<!-- forced-contact-verdicts:begin -->"), std::string::npos);
+  EXPECT_NE(readme.find("docs/results/forced_contact/experiment.json"), std::string::npos);
+}
+
+TEST(ReadmeTables, AHandEditedForcedContactTableFailsTheCheck) {
+  const fs::path dir = testing::temp_dir("readme-tables-edit-forced");
+  std::string readme = testing::slurp(kTablesSourceDir / "README.md");
+  const std::size_t at = readme.find("| `gia-recovers`", readme.find("<!-- forced-contact-verdicts:begin -->"));
+  ASSERT_NE(at, std::string::npos);
+  readme.replace(at, 15, "| `gia-RECOVERS`");
+  const fs::path copy = dir / "README.md";
+  testing::write_text(copy, readme);
+  const auto failed = run_script("--readme " + testing::quoted(copy.string()) + " " + result_arg() + " --check", dir);
+  EXPECT_EQ(failed.code, 1);
+  EXPECT_NE(failed.err.find("gia-RECOVERS"), std::string::npos) << failed.err;
+  EXPECT_NE(failed.err.find("forced-contact block differs"), std::string::npos) << failed.err;
+}
+
+TEST(ReadmeTables, AHandEditedTableFailsTheCheckAndIsRewritten) {
+  const fs::path dir = testing::temp_dir("readme-tables-edit");
+  std::string readme = testing::slurp(kTablesSourceDir / "README.md");
+  const std::size_t at = readme.find("reproduced", readme.find("<!-- self-contact-verdicts:begin -->"));
+  ASSERT_NE(at, std::string::npos);
+  readme.replace(at, 10, "REPRODUCED");
+  const fs::path copy = dir / "README.md";
+  testing::write_text(copy, readme);
+  const std::string args = "--readme " + testing::quoted(copy.string()) + " " + result_arg();
+  const auto failed = run_script(args + " --check", dir);
+  EXPECT_EQ(failed.code, 1);
+  EXPECT_NE(failed.err.find("REPRODUCED"), std::string::npos) << failed.err;  // the diff shows the edit
+  EXPECT_EQ(testing::slurp(copy), readme) << "--check writes nothing";
+  EXPECT_EQ(run_script(args, dir).code, 0);
+  EXPECT_EQ(testing::slurp(copy), testing::slurp(kTablesSourceDir / "README.md"));
+  EXPECT_EQ(run_script(args + " --check", dir).code, 0);
+}
+
+TEST(ReadmeTables, BadInputExitsTwoNamingTheFile) {
+  const fs::path dir = testing::temp_dir("readme-tables-bad");
+  const fs::path no_block = dir / "README.md";
+  testing::write_text(no_block, "# a README without the block\n");
+  const auto r = run_script("--readme " + testing::quoted(no_block.string()) + " " + result_arg(), dir);
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find(no_block.string()), std::string::npos) << r.err;
+  EXPECT_EQ(testing::slurp(no_block), "# a README without the block\n");
+  const fs::path not_result = dir / "x.json";
+  testing::write_text(not_result, "{\"experiment\": \"other\"}");
+  const auto r2 = run_script("--check --result " + testing::quoted(not_result.string()), dir);
+  EXPECT_EQ(r2.code, 2);
+  EXPECT_NE(r2.err.find("x.json: /experiment"), std::string::npos) << r2.err;
+}
+
+}  // namespace
+}  // namespace tecido
