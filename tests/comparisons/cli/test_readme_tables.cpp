@@ -43,7 +43,7 @@ TEST(ReadmeTables, AHandEditedForcedContactTableFailsTheCheck) {
   std::string readme = testing::slurp(kTablesSourceDir / "README.md");
   const std::size_t at = readme.find("| `gia-recovers`", readme.find("<!-- forced-contact-verdicts:begin -->"));
   ASSERT_NE(at, std::string::npos);
-  readme.replace(at, 15, "| `gia-RECOVERS`");
+  readme.replace(at, 16, "| `gia-RECOVERS`");
   const fs::path copy = dir / "README.md";
   testing::write_text(copy, readme);
   const auto failed = run_script("--readme " + testing::quoted(copy.string()) + " " + result_arg() + " --check", dir);
