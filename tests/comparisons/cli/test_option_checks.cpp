@@ -104,7 +104,7 @@ TEST_F(OptionChecks, ParseErrorsAreOneLineExitTwo) {
   expect("run " + path("s.json") + " --steps 5 --steps 7", "--steps: At Most 1 required but received 2");
   expect("run", "scene is required");
   expect("", "A subcommand is required");
-  expect("frobnicate", "unknown command \"frobnicate\" (known: ccd, experiment, merge, plane, run, selfcollide, suite, tritri; see --help)");
+  expect("frobnicate", "unknown command \"frobnicate\" (known: ccd, experiment, merge, plane, run, selfcollide, suite, tritri, view; see --help)");
 }
 
 }  // namespace

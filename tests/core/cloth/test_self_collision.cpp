@@ -103,8 +103,9 @@ TEST(SelfCollision, BroadPhaseMatchesBruteForceOnRandomSoups) {
 // triangles of a flat grid duplicated with fresh indices (every copy touches or overlaps its
 // original, coplanar), plus copies shifted to touch only along an edge or at a vertex.
 TEST(SelfCollision, SameAnswerAtEveryThreadCount) {
-  // A 40 x 40 grid jittered by more than half its spacing: neighbouring triangles cross
-  // everywhere, thousands of candidates. Every thread count gives the brute force's pairs, and
+  // A 40 x 40 grid jittered in its plane by more than its spacing (0.06 against 0.05) and a
+  // little across it: neighbouring triangles cross everywhere, more than two shares' worth of
+  // candidates (a share per 4096; a 0.03 jitter gave fewer than 4096, one share). Every thread count gives the brute force's pairs, and
   // the threaded runs must have run in shares.
   std::mt19937_64 rng(99);
   std::uniform_real_distribution<double> u(-1.0, 1.0);
@@ -112,7 +113,7 @@ TEST(SelfCollision, SameAnswerAtEveryThreadCount) {
   std::vector<Vec3> x;
   std::vector<std::array<int, 3>> tris;
   for (int r = 0; r < n; ++r)
-    for (int c = 0; c < n; ++c) x.push_back(Vec3(0.05 * c, 0.05 * r, 0.0) + 0.03 * Vec3(u(rng), u(rng), u(rng)));
+    for (int c = 0; c < n; ++c) x.push_back(Vec3(0.05 * c, 0.05 * r, 0.0) + Vec3(0.06 * u(rng), 0.06 * u(rng), 0.01 * u(rng)));
   for (int r = 0; r + 1 < n; ++r)
     for (int c = 0; c + 1 < n; ++c) {
       const int a = r * n + c;
@@ -120,11 +121,12 @@ TEST(SelfCollision, SameAnswerAtEveryThreadCount) {
       tris.push_back({a, a + n + 1, a + n});
     }
   const std::vector<TrianglePair> brute = self_collision_pairs_brute(x, tris);
-  ASSERT_GT(brute.size(), 50u);  // 98 crossing pairs
+  ASSERT_GT(brute.size(), 50u);
   for (int threads : {1, 2, 3, 8}) {
     SelfCollisionDetector det(tris, x);
     det.set_threads(threads);
     for (int round = 0; round < 2; ++round) EXPECT_EQ(det.detect(x), brute) << "threads " << threads;
+    EXPECT_GE(det.last_candidates(), 2u * 4096u);
     if (threads > 1) {
       EXPECT_GT(det.last_parts(), 1) << "threads " << threads;
     }
