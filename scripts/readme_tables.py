@@ -249,7 +249,11 @@ def main(argv):
                 text = f.read()
         except OSError as e:
             raise InputProblem(f"{a.readme}: cannot read: {e.strerror}")
+        # Links name the result from the repository's root when it lies inside it (README.md sits
+        # there), so that a copy of the README elsewhere gets the same block.
         readme_dir = os.path.dirname(os.path.abspath(a.readme))
+        if os.path.abspath(a.result).startswith(ROOT + os.sep):
+            readme_dir = ROOT
         before, current, after = split_readme(a.readme, text)
         wanted = block(res, os.path.relpath(os.path.abspath(a.result), readme_dir))
         text = "\n".join(before + wanted + after)
