@@ -14,6 +14,7 @@
 // Counters: `reuse_us` and `scratch_us`, mean detection time per step (steady clock), `ratio`
 // = scratch / reuse, and `pairs` summed over the run. Both ways must report the same pairs at
 // every step; the benchmark stops with an error otherwise.
+#include "comparisons/io/source_dir.h"
 #include "comparisons/io/scene_json.h"
 #include "core/cloth/continuous_self_collision.h"
 #include "core/cloth/self_collision.h"

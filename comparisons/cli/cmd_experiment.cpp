@@ -16,6 +16,7 @@
 // The seed's argument for GIA (fig. 16) as an experiment (comparisons/suites/forced_contact/
 // experiment.h): the same outputs, shards and merge; --frames also writes run 0 of every
 // (response, hold) as OBJ frames under DIR/frames/. The self-contact options are refused.
+#include "comparisons/io/source_dir.h"
 #include "comparisons/cli/commands.h"
 #include "comparisons/cli/option_checks.h"
 #include "comparisons/cli/shard_option.h"

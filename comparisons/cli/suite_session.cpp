@@ -1,3 +1,4 @@
+#include "comparisons/io/source_dir.h"
 #include "comparisons/cli/suite_session.h"
 
 #include "comparisons/cli/commands.h"

@@ -2,6 +2,7 @@
 // A suite run twice, once with data/tolerances.json and once with one band made impossible: the
 // set of checks must not change (bands decide pass or fail, never what runs), every check whose
 // band came from the perturbed entry must fail, and every other check must keep its verdict.
+#include "comparisons/io/source_dir.h"
 #include "comparisons/suites/suite.h"
 #include "comparisons/suites/tolerances.h"
 #include "tests/support/cli_runner.h"

@@ -3,6 +3,7 @@
 // pairs whose answers are worked out by hand, with what the seed's Moller-Trumbore rule (an edge
 // of A hits B AND an edge of B hits A, |det| >= 1e-6) and the Python example's rule (an edge of
 // either hits the other, det != 0) answer on each.
+#include "comparisons/io/source_dir.h"
 #include "core/geometry/types.h"
 
 #include <string>

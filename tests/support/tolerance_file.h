@@ -1,6 +1,7 @@
 #pragma once
 // Tolerance files for the tests that edit bands: data/tolerances.json with every number of some
 // sections changed, and report.json reduced to what must not depend on the bands.
+#include "comparisons/io/source_dir.h"
 #include "tests/support/cli_runner.h"
 
 #include <nlohmann/json.hpp>

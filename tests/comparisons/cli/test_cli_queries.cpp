@@ -3,6 +3,7 @@
 // lines are the outputs of the commit before it, on the repository's sample inputs), `tecido ccd`
 // keeps its own option between the input and --engines, and every one refuses an unknown engine
 // with exit 2 and the same one-line message.
+#include "comparisons/io/source_dir.h"
 #include "tests/support/cli_runner.h"
 
 #include <gtest/gtest.h>

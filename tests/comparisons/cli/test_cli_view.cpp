@@ -2,6 +2,7 @@
 // written; markup in an id lands in the data file as a JSON string, never in the HTML), `tecido run
 // --out` (index.html beside the frames). The pages themselves are tested in a browser
 // (web/test/run_all.mjs, scripts/browser_test.sh).
+#include "comparisons/io/source_dir.h"
 #include "tests/support/cli_runner.h"
 
 #include <gtest/gtest.h>

@@ -7,6 +7,7 @@
 //  - `tecido experiment self-contact --quick` (a subset of its runs) likewise.
 // Files name the command line that wrote them (comparisons/io/provenance.h), which differs in
 // --out and --threads: it is checked to be that run's, then masked (tests/support/command_line_mask.h).
+#include "comparisons/io/source_dir.h"
 #include "tests/support/cli_runner.h"
 #include "tests/support/command_line_mask.h"
 

@@ -5,6 +5,7 @@
 // says and it rests on the sphere; with edge contacts on, no spring of the 121-particle block scene passes through the block
 // after any step; `tecido run --out` draws the moving sphere where it is at each frame; the
 // block given as an OBJ mesh holds the cloth as the analytic block does.
+#include "comparisons/io/source_dir.h"
 #include "comparisons/io/scene_json.h"
 #include "core/dynamics/springs_through_obstacle.h"
 #include "core/geometry/obstacle_pose.h"

@@ -2,6 +2,7 @@
 // results docs/results/self_contact_experiment.json and docs/results/forced_contact/experiment.json: the script's --check passes on the
 // repository, fails (exit 1, with a diff) when the README's block is edited by hand, and refuses
 // (exit 2, one line naming the file) a README without the block or a result that is not one.
+#include "comparisons/io/source_dir.h"
 #include "tests/support/cli_runner.h"
 
 #include <gtest/gtest.h>

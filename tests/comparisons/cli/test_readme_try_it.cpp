@@ -1,6 +1,7 @@
 // The README as a newcomer meets it: it stays a few screens long, its "Try it" and "Validate your
 // own engine" commands run as written and write what it says they write, and every link of the
 // README and docs/ reaches a page and a heading that exist.
+#include "comparisons/io/source_dir.h"
 #include "tests/support/cli_runner.h"
 #include "tests/support/markdown_blocks.h"
 #include "tests/support/markdown_links.h"

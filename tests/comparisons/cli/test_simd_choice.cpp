@@ -1,6 +1,7 @@
 // TECIDO_SIMD from outside (core/platform/simd_level.h): a cloth run with springs and
 // self-collision prints the same bytes whatever instruction set its kernels are allowed, and a
 // value the CPU cannot run, or an unknown one, ends the process with exit 2 and one line.
+#include "comparisons/io/source_dir.h"
 #include "tests/support/cli_runner.h"
 
 #include "core/platform/simd_level.h"

@@ -1,5 +1,6 @@
 // `tecido --version`, and the version, commit and command line in every file a command writes
 // for later reading: report.json and report.md (suite), result.json (run --out), experiment.json.
+#include "comparisons/io/source_dir.h"
 #include "comparisons/io/provenance.h"
 #include "tests/support/cli_runner.h"
 

@@ -3,6 +3,7 @@
 // with one line naming the holder's pid (known here independently: the holder is this test
 // process), and nothing of the refused run is written; a claim on a directory that does not
 // exist yet is taken when it is created, and a released claim can be taken again.
+#include "comparisons/io/source_dir.h"
 #include "tests/support/cli_runner.h"
 #include "tests/support/rejection.h"
 #include "comparisons/io/atomic_file.h"

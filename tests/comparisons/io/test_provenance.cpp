@@ -1,6 +1,7 @@
 // What every output says about how it was made (comparisons/io/provenance.h): the version is the
 // CMake project's, the commit git's own answer for this checkout (or "unknown"), and the command
 // line is quoted so that a shell runs it again as it was.
+#include "comparisons/io/source_dir.h"
 #include "comparisons/io/provenance.h"
 #include "tests/support/cli_runner.h"
 

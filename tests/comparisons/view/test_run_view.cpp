@@ -1,3 +1,4 @@
+#include "comparisons/io/source_dir.h"
 #include "comparisons/view/run_view.h"
 
 #include "comparisons/io/scene_json.h"

@@ -1,5 +1,6 @@
 // Loading plug-ins: the example's table as written in examples/plugin; every way a library can fail
 // to be a plug-in is one EngineError naming the path and what failed.
+#include "comparisons/io/source_dir.h"
 #include "comparisons/engines/outside/engine_error.h"
 #include "comparisons/engines/outside/plugin_engine.h"
 #include "comparisons/engines/outside/plugin_library.h"

@@ -1,6 +1,7 @@
 // The `ccd` suite end to end with --quick: every declared check is produced and passes, the
 // report has its tables, and the disagreement file reads back as a queries file whose truths
 // are the referee's answers.
+#include "comparisons/io/source_dir.h"
 #include "comparisons/suites/ccd/ccd_suite.h"
 
 #include "comparisons/io/ccd_queries.h"

@@ -1,6 +1,7 @@
 // The drift suite's case table and declared checks (comparisons/suites/drift/drift_suite.h), and its
 // assembly on planted case results: a case that threw, an unstable run and a NaN each fail their
 // checks with a reason and never drop one; the check names depend on the settings only.
+#include "comparisons/io/source_dir.h"
 #include "comparisons/suites/drift/drift_suite.h"
 
 #include "comparisons/suites/drift/invariants.h"

@@ -1,4 +1,5 @@
 // The obstacles suite's inside test on hand-worked moving obstacles, and its cases on small runs.
+#include "comparisons/io/source_dir.h"
 #include "comparisons/suites/obstacles/analytic_cases.h"
 #include "comparisons/suites/obstacles/block_scene.h"
 #include "comparisons/suites/sweep.h"

@@ -1,6 +1,7 @@
 // Where the block's edges fall against the cloth's grid (edge_insets) and which springs cross the
 // top face's outline (springs_across_outline), on the two block scenes and hand-worked changes of
 // them: the matched comparison's premise, computed and asserted.
+#include "comparisons/io/source_dir.h"
 #include "comparisons/suites/obstacles/block_scene.h"
 
 #include <gtest/gtest.h>

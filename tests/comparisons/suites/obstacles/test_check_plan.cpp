@@ -1,6 +1,7 @@
 // The obstacles suite's declared checks: the set depends on the settings only (never on measured
 // values or on the tolerance file's numbers), tightening a band flips a check, a case that threw or
 // a value never produced fails with its reason.
+#include "comparisons/io/source_dir.h"
 #include "comparisons/suites/obstacles/check_plan.h"
 #include "comparisons/suites/sweep.h"
 

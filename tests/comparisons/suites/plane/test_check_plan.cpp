@@ -1,6 +1,7 @@
 // The plane suite's declared checks (comparisons/suites/plane/check_plan.*): which engines are
 // checked on which groups, the names (independent of the tolerance numbers), the bands (read from
 // the tolerance file, the Bullet band in steps times the drop's step), and a missing band named.
+#include "comparisons/io/source_dir.h"
 #include "comparisons/suites/plane/check_plan.h"
 
 #include "comparisons/io/input_error.h"

@@ -4,6 +4,7 @@
 // both hit fails instead of passing; a contact-time cell or a drop that throws fails the check it
 // feeds. Through the CLI: with every /plane/ number changed the suite reports the same checks after
 // the same work, failing (exit 1) where a band excludes the value; shards merge into the same report.
+#include "comparisons/io/source_dir.h"
 #include "comparisons/suites/plane/plane_suite.h"
 
 #include "tests/support/cli_runner.h"

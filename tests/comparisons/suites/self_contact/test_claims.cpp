@@ -2,6 +2,7 @@
 // built from a known none-share per cell and known effects per mode, with seeded noise, so that
 // each claim's verdict is known in advance; Holm's adjustment and the verdict on hand-made
 // p-values; data without variation; the held-out recomputation; the strength readings' plan.
+#include "comparisons/io/source_dir.h"
 #include "comparisons/suites/self_contact/claims.h"
 #include "comparisons/suites/self_contact/experiment.h"
 #include "comparisons/suites/self_contact/sensitivity.h"

@@ -1,6 +1,7 @@
 // `tecido experiment self-contact`: the output contract (72 cells, the claims with their rules),
 // bit-identical output at 1 and 2 threads, --calibrate's record, the committed calibration the
 // scene file states, and bad usage (exit 2, nothing written). Quick runs of a few cells only.
+#include "comparisons/io/source_dir.h"
 #include "tests/support/cli_runner.h"
 #include "tests/support/command_line_mask.h"
 

@@ -1,6 +1,7 @@
 // comparisons/suites/self_contact/scene_applier.h and run.h on the experiment's own scene: what a
 // cell and a reading change (checked against the base scene's numbers), what the base scene must
 // be, and that counting never changes a run.
+#include "comparisons/io/source_dir.h"
 #include "comparisons/io/input_error.h"
 #include "comparisons/io/scene_json.h"
 #include "comparisons/suites/self_contact/run.h"

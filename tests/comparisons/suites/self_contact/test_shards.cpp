@@ -2,6 +2,7 @@
 // run's files byte for byte (a few quick cells, no timing cases); made-up results of a plan,
 // written as shards, merge into exactly what assembling them directly gives; inconsistent shards
 // exit 2 with one line.
+#include "comparisons/io/source_dir.h"
 #include "tests/support/cli_runner.h"
 #include "tests/support/command_line_mask.h"
 #include "comparisons/suites/self_contact/shards.h"

@@ -2,6 +2,7 @@
 // frame_sources.*): a recording keeps at most the planned number of frames with and without a
 // contact, judged by brute force over every pair (not the box tree the recorder uses), at the
 // planned steps; the sources build the meshes they describe.
+#include "comparisons/io/source_dir.h"
 #include "comparisons/suites/selfcollision/frame_sources.h"
 
 #include "core/cloth/self_collision.h"

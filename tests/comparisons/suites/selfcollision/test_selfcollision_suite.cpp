@@ -3,6 +3,7 @@
 // scored by hand-countable numbers; sharded runs merge into the same checks and data; and with
 // every number of its tolerance section changed it reports the same checks after the same work,
 // exiting 1 when a band excludes the values.
+#include "comparisons/io/source_dir.h"
 #include "comparisons/suites/selfcollision/selfcollision_suite.h"
 
 #include "tests/support/cli_runner.h"

@@ -1,5 +1,6 @@
 // The stability suite's declared checks (comparisons/suites/stability/checks.*): the same names
 // whatever the tolerance file says and whether --quick or not; every band read from the file.
+#include "comparisons/io/source_dir.h"
 #include "comparisons/suites/stability/cases.h"
 #include "comparisons/suites/stability/checks.h"
 #include "comparisons/io/input_error.h"

@@ -1,6 +1,7 @@
 // The stability suite (comparisons/suites/stability/stability_suite.*) cannot lie: a NaN or empty grid
 // cell, an unstable run and a group that throws each fail the checks they feed, with the reason
 // beside them, and no check disappears; the tolerance file changes pass or fail, never the work.
+#include "comparisons/io/source_dir.h"
 #include "tests/support/cli_runner.h"
 #include "comparisons/suites/stability/stability_suite.h"
 

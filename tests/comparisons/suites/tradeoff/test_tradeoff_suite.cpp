@@ -2,6 +2,7 @@
 // on planted case results (a case that threw, a failed reference, an empty front: every check
 // stays, failed with a reason), the prose derived from planted tables (findings.h), and the whole
 // suite through the CLI with every band changed.
+#include "comparisons/io/source_dir.h"
 #include "comparisons/suites/tradeoff/tradeoff_suite.h"
 
 #include "comparisons/suites/tradeoff/findings.h"
