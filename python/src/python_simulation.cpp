@@ -31,16 +31,16 @@ std::vector<Vec3> state_points(py::handle value, std::size_t n, const char* what
 }  // namespace
 
 PythonSimulation::PythonSimulation(std::shared_ptr<PythonEngine> engine, const Scene& scene)
-    : engine_(std::move(engine)), dt_(scene.dt), x_(scene.particles.x), v_(scene.particles.v) {}
+    : SteppedSimulation(scene.dt), engine_(std::move(engine)) {
+  begin(scene.particles.x, scene.particles.v);
+}
 
 PythonSimulation::~PythonSimulation() { engine_->release_scene(); }
 
-bool PythonSimulation::advance(long long n) {
-  if (failed_) return false;
-  if (n <= 0) return true;
+bool PythonSimulation::call_step(long long n) {
   {
     py::gil_scoped_acquire gil;
-    const py::object r = engine_->call("step", "op step", py::make_tuple(dt_, n));
+    const py::object r = engine_->call("step", "op step", py::make_tuple(dt(), n));
     try {
       py::object x, v;
       if (py::isinstance<py::dict>(r)) {
@@ -58,9 +58,7 @@ bool PythonSimulation::advance(long long n) {
       engine_->fail("op step", p.what());
     }
   }
-  steps_ += n;
-  for (std::size_t i = 0; i < x_.size() && !failed_; ++i) failed_ = !x_[i].allFinite() || !v_[i].allFinite();
-  return !failed_;
+  return true;
 }
 
 }  // namespace tecido::python

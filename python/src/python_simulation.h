@@ -1,9 +1,9 @@
 #pragma once
-/// A Python engine's simulation behind engines::DynamicsEngine, as ProcessSimulation is a
-/// process's: step() is one call step(dt, 1), advance(n) one call step(dt, n); the positions and
-/// velocities it returns are read back ((n, 3) each; None or a non-finite value ends the run).
+/// A Python engine's simulation (comparisons/engines/outside/stepped_simulation.h), as
+/// ProcessSimulation is a process's: advance(n) is one call step(dt, n), whose positions and
+/// velocities ((n, 3) each) are read back.
 /// Holds the engine's scene lease until destroyed.
-#include "comparisons/engines/dynamics_engine.h"
+#include "comparisons/engines/outside/stepped_simulation.h"
 #include "core/scene/scene.h"
 
 #include <memory>
@@ -13,26 +13,15 @@ namespace tecido::python {
 
 class PythonEngine;
 
-class PythonSimulation final : public engines::DynamicsEngine {
+class PythonSimulation final : public outside::SteppedSimulation {
  public:
   /// After a successful create on `engine` (which holds the lease for this simulation).
   PythonSimulation(std::shared_ptr<PythonEngine> engine, const Scene& scene);
   ~PythonSimulation() override;
 
-  bool step() override { return advance(1); }
-  bool advance(long long n) override;
-  std::vector<Vec3> positions() const override { return x_; }
-  std::vector<Vec3> velocities() const override { return v_; }
-  std::vector<std::string> not_modelled() const override { return {}; }
-  double time() const override { return static_cast<double>(steps_) * dt_; }
-  long long steps_done() const override { return steps_; }
-
  private:
+  bool call_step(long long n) override;
   std::shared_ptr<PythonEngine> engine_;
-  double dt_;
-  long long steps_ = 0;
-  bool failed_ = false;
-  std::vector<Vec3> x_, v_;
 };
 
 }  // namespace tecido::python

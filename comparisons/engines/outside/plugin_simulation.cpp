@@ -2,15 +2,14 @@
 
 #include "comparisons/engines/outside/scene_arrays.h"
 
-#include <cmath>
-
 namespace tecido::outside {
 
 PluginSimulation::PluginSimulation(const tecido_engine* engine, void* handle, std::size_t particles, double dt,
                                    std::shared_ptr<std::mutex> mutex, std::shared_ptr<const void> keep_alive)
-    : engine_(engine), handle_(handle), dt_(dt), flat_x_(3 * particles), flat_v_(3 * particles),
+    : SteppedSimulation(dt), engine_(engine), handle_(handle), flat_x_(3 * particles), flat_v_(3 * particles),
       mutex_(std::move(mutex)), keep_alive_(std::move(keep_alive)) {
   read_state();
+  begin(std::move(x_), std::move(v_));
 }
 
 PluginSimulation::~PluginSimulation() {
@@ -29,22 +28,16 @@ void PluginSimulation::read_state() {
   }
   x_ = points_from_flat(flat_x_);
   v_ = points_from_flat(flat_v_);
-  for (std::size_t i = 0; i < flat_x_.size(); ++i)
-    if (!std::isfinite(flat_x_[i]) || !std::isfinite(flat_v_[i])) failed_ = true;
 }
 
-bool PluginSimulation::advance(long long n) {
-  if (failed_) return false;
-  if (n <= 0) return true;
+bool PluginSimulation::call_step(long long n) {
   int status;
   {
     auto lock = guard();
-    status = engine_->step(handle_, dt_, static_cast<std::int64_t>(n));
+    status = engine_->step(handle_, dt(), static_cast<std::int64_t>(n));
   }
-  if (status != 0) failed_ = true;
-  steps_ += n;
   read_state();
-  return !failed_;
+  return status == 0;
 }
 
 }  // namespace tecido::outside

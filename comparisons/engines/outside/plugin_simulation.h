@@ -1,9 +1,8 @@
 #pragma once
-/// A plug-in engine's simulation (create/step/read/destroy of include/tecido/plugin.h) behind
-/// engines::DynamicsEngine: step() is step(sim, dt, 1), advance(n) is step(sim, dt, n) in one
-/// call; positions and velocities are read back after each call, and a non-finite value or a
-/// nonzero return ends the run (step() and advance() return false from then on).
-#include "comparisons/engines/dynamics_engine.h"
+/// A plug-in engine's simulation (create/step/read/destroy of include/tecido/plugin.h;
+/// stepped_simulation.h): advance(n) is step(sim, dt, n) in one call, then read(); a nonzero
+/// return ends the run.
+#include "comparisons/engines/outside/stepped_simulation.h"
 
 #include <tecido/plugin.h>
 
@@ -13,7 +12,7 @@
 
 namespace tecido::outside {
 
-class PluginSimulation final : public engines::DynamicsEngine {
+class PluginSimulation final : public SteppedSimulation {
  public:
   /// Takes ownership of `handle` (destroyed with the engine's destroy()). `mutex`, when set, is
   /// held around every call into the plug-in. `keep_alive` keeps the library loaded.
@@ -21,23 +20,12 @@ class PluginSimulation final : public engines::DynamicsEngine {
                    std::shared_ptr<std::mutex> mutex, std::shared_ptr<const void> keep_alive);
   ~PluginSimulation() override;
 
-  bool step() override { return advance(1); }
-  bool advance(long long n) override;
-  std::vector<Vec3> positions() const override { return x_; }
-  std::vector<Vec3> velocities() const override { return v_; }
-  std::vector<std::string> not_modelled() const override { return {}; }
-  double time() const override { return static_cast<double>(steps_) * dt_; }
-  long long steps_done() const override { return steps_; }
-
  private:
+  bool call_step(long long n) override;
   void read_state();
   std::unique_lock<std::mutex> guard() const;
   const tecido_engine* engine_;
   void* handle_;
-  double dt_;
-  long long steps_ = 0;
-  bool failed_ = false;
-  std::vector<Vec3> x_, v_;
   std::vector<double> flat_x_, flat_v_;
   std::shared_ptr<std::mutex> mutex_;
   std::shared_ptr<const void> keep_alive_;
