@@ -217,30 +217,6 @@ async function playableRun(browser, file, what) {
   return frames;
 }
 
-/// The obstacles suite's block runs: a page each, linked from report.html, holding the start and
-/// every frame the suite counted.
-async function obstaclePages(browser) {
-  const dir = join(out, 'obstacles');
-  rmSync(dir, { recursive: true, force: true });
-  try {
-    run(['suite', 'obstacles', '--quick', '--out', dir]);
-  } catch (e) {
-    if (e.status !== 1) throw e;
-  }
-  const json = JSON.parse(readFileSync(join(dir, 'report.json'), 'utf8'));
-  const data = json.suites.find((s) => s.name === 'obstacles').data;
-  const { page, report } = await open(browser, join(dir, 'report.html'));
-  noErrors(report, 'obstacles report.html');
-  const views = await page.$$eval('ul.views a', (l) => l.map((a) => a.getAttribute('href')));
-  await page.close();
-  const blocks = Object.keys(data).filter((n) => /^block\//.test(n));
-  const hrefs = blocks.map((n) => `obstacles/${n.replaceAll('/', '-')}.html`);
-  check(blocks.length > 0 && hrefs.every((h) => views.includes(h) && existsSync(join(dir, h))), 'obstacles: a page per block run, linked from report.html', hrefs.join(' '));
-  check(blocks.every((n) => data[n].view === undefined), 'obstacles: the pages\' data is not in report.json');
-  const frames = await playableRun(browser, join(dir, hrefs[0]), 'obstacles block page');
-  check(frames === data[blocks[0]].frames.length + 1, 'obstacles block page: the start and every counted frame', `${frames} frames, ${data[blocks[0]].frames.length} counted`);
-}
-
 /// tecido experiment self-contact --runs 0 --view: the run's page.
 async function experimentRunPage(browser) {
   const dir = join(out, 'self-contact');
@@ -294,7 +270,6 @@ try {
   await hostilePage(browser);
   await reportPage(browser);
   await selfCollisionPage(browser);
-  await obstaclePages(browser);
   await experimentRunPage(browser);
 } finally {
   await browser.close();
