@@ -5,11 +5,14 @@
 //                                [--scene FILE] [--seed-table FILE]
 //                                [--elasticity-as stiffness|restitution] [--strength F] [--shard i/n]
 //                                [--max-work W]
+// tecido experiment self-contact --runs LIST --view [--out DIR] [--quick] [other self-contact options]
 // The seed's self-contact experiment as an ensemble, its claims judged by stated rules
 // (comparisons/suites/self_contact/experiment.h): writes DIR/experiment.json and experiment.md
 // (with --calibrate: DIR/calibration.json and calibration.md). With --shard i/n only the cases whose
 // index % n == i, written as DIR/experiment.json (or calibration.json) marked as a shard;
-// `tecido merge` joins the shards.
+// `tecido merge` joins the shards. With --view, instead of the ensemble: the first run (wind seed 0,
+// the baseline reading) of each cell of --runs as a page, DIR/runs/<cell>/index.html (as `tecido run
+// --out` writes), a frame every 0.02 s.
 //
 // tecido experiment forced-contact [--out DIR] [--threads N] [--quick] [--seeds N] [--shard i/n]
 //                                  [--max-work W] [--frames]
@@ -31,6 +34,8 @@
 #include "comparisons/suites/self_contact/experiment.h"
 #include "comparisons/suites/self_contact/shards.h"
 #include "comparisons/suites/suite_shard.h"
+#include "comparisons/view/run_recording.h"
+#include "comparisons/view/view_page.h"
 
 #include <algorithm>
 #include <chrono>
@@ -80,7 +85,7 @@ struct Opts {
   int threads = 0, seeds = 0;
   double max_work = io::kDefaultMaxWork;
   double strength = std::nan("");  // not given
-  bool quick = false, calibrate = false, no_sensitivity = false, frames = false;
+  bool quick = false, calibrate = false, no_sensitivity = false, frames = false, view = false;
 };
 
 /// The subcommand's options, all in one place.
@@ -118,6 +123,9 @@ void define_options(CLI::App* sub, Opts& o) {
   sub->add_option("--shard", o.shard, "Only the cases whose index % n == i, e.g. 0/8; join the shards with `tecido merge`")
       ->check(shard_spec());
   sub->add_flag("--frames", o.frames, "forced-contact: also write run 0 of every (response, hold) as OBJ frames in DIR/frames");
+  sub->add_flag("--view", o.view,
+                "self-contact: instead of the ensemble, write the first run (wind seed 0) of each --runs cell as a "
+                "3-D page, DIR/runs/<cell>/index.html");
   sub->add_option("--max-work", o.max_work, "Largest work of one run, steps x elements per step (see tecido run)")
       ->capture_default_str()
       ->check(number_in(1.0, false, io::kMaxWorkCeiling));
@@ -208,16 +216,38 @@ int run_forced(const Opts& o, CLI::App* sub) {
   return 0;
 }
 
+/// Seconds between the frames of a --view page.
+constexpr double kViewFrameInterval = 0.02;
+
+/// self-contact --view: the first run of each --runs cell (wind seed 0, the baseline reading: the
+/// very run the ensemble makes) as DIR/runs/<cell>/index.html.
+int write_run_views(const sc::Plan& plan, const std::string& out) {
+  for (int cell : plan.cells) {
+    const Scene scene = sc::run_case_scene(plan, {sc::CaseSpec::Run, 0, cell, 0, 0});
+    const long long every = std::max(1LL, std::llround(kViewFrameInterval / scene.dt));
+    const std::string title = "tecido experiment self-contact, run " + std::to_string(cell) + " (" +
+                              sc::mode_label(sc::CellGrid::cell(cell).mode) + "), wind seed 0";
+    const std::string dir = out + "/runs/" + std::to_string(cell);
+    view::write_view_page(dir, "index", title, view::record_run_page(scene, every, title));
+    std::cout << "page " << dir << "/index.html\n";
+  }
+  return 0;
+}
+
 int run(Opts o, CLI::App* sub) {
   if (o.name != "self-contact" && o.name != "forced-contact")
     throw io::UsageError("unknown experiment \"" + o.name + "\" (known: self-contact, forced-contact)");
   if (o.out.empty()) o.out = "out/" + o.name;
+  if (o.view && o.name != "self-contact") throw io::UsageError("--view is an option of self-contact, not forced-contact");
   if (o.name == "forced-contact") return run_forced(o, sub);
+  if (o.view && (o.runs.empty() || o.calibrate || !o.shard.empty()))
+    throw io::UsageError("--view needs --runs (the cells to draw) and goes with neither --calibrate nor --shard");
   const sc::Options opt = to_options(o);
   check_experiment_work(opt, o.max_work);
   io::check_output_dir(o.out);
   const io::OutputDirLock out_lock(o.out);  // a second run into this --out refuses
   const auto plan = std::make_shared<const sc::Plan>(sc::make_plan(opt));
+  if (o.view) return write_run_views(*plan, o.out);
   const suites::Sweep sweep = sc::make_sweep(plan);
   const auto indices = suites::shard_indices(sweep.cases, opt.shard_index, opt.shard_count);
   const auto t0 = std::chrono::steady_clock::now();

@@ -8,7 +8,7 @@ import { entryName, showEntry, lerp, flat } from './answers.js';
 const A = 0x3b75c4, B = 0xe08a1e, HIT = 0xd62728, REF = 0x2ca02c, ENGINE = 0xff7f0e;
 
 /// Clears the stage's objects but its lights.
-function clear(stage) {
+export function clear(stage) {
   for (const o of [...stage.scene.children]) if (!o.isLight) stage.scene.remove(o);
 }
 
@@ -23,11 +23,17 @@ const LEGENDS = {
   ccd: "blue and red: the query at t · grey: the paths from t = 0 to 1 · green: where the referee says they first touch · orange: where the engine says",
 };
 
-function setup(data, container, list, timeKey, draw) {
+/// The page of a disagreement file: the chooser over `list`, `draw(stage, entry, info)` on each
+/// choice. `labels`: the legend, an entry's name in the chooser and its lines in the panel (by
+/// default those of an agreement suite's entry: engine, its answer, the referee's).
+export function setup(data, container, list, timeKey, draw, labels = {}) {
+  const legend = labels.legend ?? LEGENDS[data.kind];
+  const name = labels.name ?? ((e) => entryName(e, timeKey));
+  const describe = labels.describe ?? ((info, e) => showEntry(info, e, timeKey));
   const stage = makeStage(container);
   const info = panel();
   line(info, 'file', data.file);
-  line(info, 'colours', LEGENDS[data.kind]).classList.add('legend');
+  line(info, 'colours', legend).classList.add('legend');
   line(info, 'entries', `${list.length} (choose one below)`);
   const view = (window.tecidoView = { kind: data.kind, entry: 0, entries: list.length });
   if (list.length === 0) {
@@ -35,9 +41,9 @@ function setup(data, container, list, timeKey, draw) {
     stage.render();
     return;
   }
-  chooser(info, list.map((e) => entryName(e, timeKey)), (k) => {
+  chooser(info, list.map(name), (k) => {
     clear(stage);
-    showEntry(info, list[k], timeKey);
+    describe(info, list[k]);
     view.entry = k;
     draw(stage, list[k], info);
     stage.render();

@@ -2,8 +2,9 @@
 // (a classic script bundled by esbuild, so that it runs from file://) draws it.
 import { showRun } from './run_view.js';
 import { showTriTri, showPlane, showCcd } from './disagreement_views.js';
+import { showSelfCollision } from './selfcollision_view.js';
 
-const views = { run: showRun, tritri: showTriTri, plane: showPlane, ccd: showCcd };
+const views = { run: showRun, tritri: showTriTri, plane: showPlane, ccd: showCcd, selfcollision: showSelfCollision };
 
 function start() {
   const notice = document.getElementById('no-viewer');

@@ -138,6 +138,95 @@ async function disagreementPage(browser, dir, suite, links) {
   await page.close();
 }
 
+/// The selfcollision suite with an engine that answers tri_tri true, false, true, ... (a fixture of
+/// the C++ tests): its page draws each entry's missed and extra pairs, as many as the file lists.
+async function selfCollisionPage(browser) {
+  const dir = join(out, 'selfcollision');
+  rmSync(dir, { recursive: true, force: true });
+  const liar = `liar=python3 ${join(root, 'tests/comparisons/engines/outside/fixtures/misbehaving_engine.py')} tri-alternate`;
+  try {
+    run(['suite', 'selfcollision', '--quick', '--engine-cmd', liar, '--engines', 'core,liar', '--out', dir]);
+  } catch (e) {
+    if (e.status !== 1) throw e;  // the liar fails its checks: expected
+  }
+  const file = join(dir, 'selfcollision', 'disagreements.html');
+  const doc = JSON.parse(readFileSync(join(dir, 'selfcollision', 'disagreements.json'), 'utf8'));
+  const { page, report } = await open(browser, join(dir, 'report.html'));
+  const views = await page.$$eval('ul.views a', (l) => l.map((a) => a.getAttribute('href')));
+  check(existsSync(file) && views.includes('selfcollision/disagreements.html'), 'selfcollision: disagreements.html written and linked from report.html');
+  noErrors(report, 'selfcollision report.html');
+  await page.close();
+  const entries = doc.entries;
+  check(entries.length > 0 && entries.every((e) => e.engine === 'liar'), 'selfcollision: the lying engine has disagreements in the file, and only it', `${entries.length} entries`);
+  const v = await open(browser, file);
+  await viewerReady(v.page);
+  noErrors(v.report, 'selfcollision disagreements page');
+  const shown = await v.page.evaluate(() => window.tecidoView.entries);
+  check(shown === entries.length, 'selfcollision disagreements page: every entry of the file can be chosen', `${shown} of ${entries.length}`);
+  await notBlank(v.page, 'selfcollision disagreements page');
+  await shot(v.page, 'selfcollision-disagreements');
+  const bad = [];
+  for (let k = 0; k < entries.length; ++k) {
+    await v.page.select('#entry', String(k));
+    const drawn = await v.page.evaluate(() => window.tecidoView.drawn);
+    if (drawn.missed !== entries[k].missed.length || drawn.extra !== entries[k].extra.length)
+      bad.push(`${entries[k].id}: drew ${drawn.missed} missed, ${drawn.extra} extra; the file lists ${entries[k].missed.length}, ${entries[k].extra.length}`);
+  }
+  const both = entries.some((e) => e.missed.length > 0) && entries.some((e) => e.extra.length > 0);
+  check(bad.length === 0 && both, 'selfcollision disagreements page: each entry draws as many missed and extra pairs as the file lists (some of each)', bad.join(' | '));
+  await v.page.close();
+  await hostileSelfCollision(browser, dir);
+}
+
+/// The selfcollision page with an entry's id and engine replaced by markup (its data file edited):
+/// the viewer shows them as text.
+async function hostileSelfCollision(browser, dir) {
+  const from = join(dir, 'selfcollision');
+  const to = join(out, 'selfcollision-hostile');
+  rmSync(to, { recursive: true, force: true });
+  mkdirSync(to, { recursive: true });
+  for (const f of ['disagreements.html', 'tecido-viewer.js', 'tecido.css']) writeFileSync(join(to, f), readFileSync(join(from, f)));
+  const js = readFileSync(join(from, 'disagreements.data.js'), 'utf8');
+  const data = JSON.parse(js.slice(js.indexOf('=') + 1, js.lastIndexOf(';')));
+  data.doc.entries[0].id = HOSTILE;
+  data.doc.entries[0].engine = '<script>alert(2)</script>';
+  writeFileSync(join(to, 'disagreements.data.js'), `window.TECIDO_VIEW = ${JSON.stringify(data)};\n`);
+  const { page, report } = await open(browser, join(to, 'disagreements.html'));
+  await viewerReady(page);
+  noErrors(report, 'hostile selfcollision page');
+  const values = await page.$$eval('#panel .value', (l) => l.map((e) => e.textContent));
+  check(values.includes(HOSTILE) && values.includes('<script>alert(2)</script>'), 'hostile selfcollision page: the id and the engine name are shown as text');
+  const made = await page.$$eval('img, #panel script', (l) => l.length);
+  check(made === 0, 'hostile selfcollision page: they made no element');
+  await page.close();
+}
+
+/// A run page: loads cleanly, draws, and its frame slider moves the cloth. Returns the page's frame count.
+async function playableRun(browser, file, what) {
+  const { page, report } = await open(browser, file);
+  await viewerReady(page);
+  noErrors(report, what);
+  await notBlank(page, what);
+  const frames = await page.evaluate(() => window.tecidoView.frames);
+  const first = await page.evaluate(() => window.tecidoView.positions());
+  await moveSlider(page, frames - 1);
+  const last = await page.evaluate(() => window.tecidoView.positions());
+  check(first.some((v, i) => Math.abs(v - last[i]) > 1e-3), `${what}: moving the frame slider changes the drawn positions`);
+  await shot(page, what.replace(/[^a-z0-9]+/gi, '-'));
+  await page.close();
+  return frames;
+}
+
+/// tecido experiment self-contact --runs 0 --view: the run's page.
+async function experimentRunPage(browser) {
+  const dir = join(out, 'self-contact');
+  rmSync(dir, { recursive: true, force: true });
+  run(['experiment', 'self-contact', '--quick', '--runs', '0', '--view', '--out', dir]);
+  const frames = await playableRun(browser, join(dir, 'runs', '0', 'index.html'), 'self-contact run page');
+  // --quick: 2 s; cell 0's step is 0.02 s, a frame every 0.02 s, and the start.
+  check(frames === 101, 'self-contact run page: a frame every 0.02 s over the 2 s of --quick', `${frames} frames`);
+}
+
 /// A cases file whose id is markup: the page shows the text and runs nothing.
 async function hostilePage(browser) {
   const dir = join(out, 'hostile');
@@ -180,6 +269,8 @@ try {
   await loadTime(browser);
   await hostilePage(browser);
   await reportPage(browser);
+  await selfCollisionPage(browser);
+  await experimentRunPage(browser);
 } finally {
   await browser.close();
 }

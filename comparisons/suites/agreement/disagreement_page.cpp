@@ -7,12 +7,12 @@
 namespace tecido::suites::agreement {
 
 std::vector<PageLink> write_disagreement_page(const std::string& out_dir, const std::string& file, const char* kind,
-                                              const char* list, const io::Json& doc) {
+                                              const char* list, const io::Json& doc, const io::Json* page_doc) {
   const std::filesystem::path rel(file);
   const std::string folder = rel.parent_path().string();
   const std::string page = view::write_view_page(
       out_dir + "/" + folder, rel.stem().string(), std::string(kind) + " disagreements",
-      {{"kind", kind}, {"file", rel.filename().string()}, {"doc", doc}});
+      {{"kind", kind}, {"file", rel.filename().string()}, {"doc", page_doc ? *page_doc : doc}});
   const std::string href = folder + "/" + page;
   const io::Json& entries = doc.at(list);
   std::vector<PageLink> links{

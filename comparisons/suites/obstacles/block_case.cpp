@@ -1,7 +1,9 @@
 #include "comparisons/suites/obstacles/block_case.h"
 
 #include "comparisons/suites/obstacles/block_scene.h"
+#include "comparisons/suites/obstacles/cases.h"
 #include "comparisons/suites/sweep.h"
+#include "comparisons/view/run_view.h"
 #include "core/simulation/simulation.h"
 
 #include <algorithm>
@@ -33,6 +35,8 @@ io::Json block_case(const Settings& s, const std::string& data_dir, int n, bool 
   Simulation sim(sc);
   sim.set_log_contacts(true);
   const long long steps = run_steps(s, sc);
+  view::RunView page(sc);  // the run's page: the start and the counted frames
+  page.add(0, sim.time(), sim.particles().x);
   io::Json frames = io::Json::array();
   int max_through = 0, end_through = 0, next_frame = 1;
   long long inside = 0;
@@ -50,6 +54,7 @@ io::Json block_case(const Settings& s, const std::string& data_dir, int n, bool 
     }
     if (k * s.block_frames >= next_frame * steps) {
       frames.push_back({num(sim.time()), through, num(deepest)});
+      page.add(k, sim.time(), x);
       ++next_frame;
     }
   }
@@ -70,7 +75,8 @@ io::Json block_case(const Settings& s, const std::string& data_dir, int n, bool 
           {"spacing", num(sc.cloth->spacing)},
           {"insets", insets},
           {"across", springs_across_outline(sc)},
-          {"unstable", sim.instability() ? io::Json(sim.instability()->step) : io::Json(nullptr)}};
+          {"unstable", sim.instability() ? io::Json(sim.instability()->step) : io::Json(nullptr)},
+          {"view", page.data(block_name(n, edge_contacts))}};
 }
 
 }  // namespace tecido::suites::obstacles

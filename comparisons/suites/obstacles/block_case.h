@@ -17,7 +17,9 @@ namespace tecido::suites::obstacles {
 /// through the block's interior), "end_depth" (the deepest of them [m], 0 when none), with the
 /// scene's "spacing" [m], "insets" (edge_insets: the block's four top edges against the grid, in
 /// spacings) and "across" (springs_across_outline),
-/// "unstable" (step or null)}.
+/// "unstable" (step or null), and "view": the run's page data (view/run_view.h: the start and the
+/// counted frames, the springs through the block in each) that the suite writes as a page and
+/// keeps out of report.json}.
 io::Json block_case(const Settings& s, const std::string& data_dir, int n, bool edge_contacts);
 
 }  // namespace tecido::suites::obstacles

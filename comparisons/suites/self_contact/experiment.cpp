@@ -111,6 +111,11 @@ Plan make_plan(const Options& o) {
   return p;
 }
 
+Scene run_case_scene(const Plan& p, const CaseSpec& c) {
+  return apply_cell(p.base, CellGrid::cell(c.cell), p.variants.at(static_cast<std::size_t>(c.variant)).in, wind_seed(p, c),
+                    p.settings.simulated_time);
+}
+
 namespace {
 
 io::Json run_one(const Plan& p, const CaseSpec& c) {
@@ -125,7 +130,7 @@ io::Json run_one(const Plan& p, const CaseSpec& c) {
     j = run_json(run_scene(apply_cell(p.base, cell, in, wind_seed(p, c), T), {ContactTest::CoreMt}, false), false);
   } else {
     const bool premise = cell.mode == 0;
-    const Scene s = apply_cell(p.base, cell, p.variants[c.variant].in, wind_seed(p, c), T);
+    const Scene s = run_case_scene(p, c);
     j = run_json(run_scene(s, p.detectors, premise), premise);
   }
   j["case"] = {static_cast<int>(c.kind), c.variant, c.cell, c.seed, c.grid};

@@ -77,6 +77,10 @@ struct Plan {
 /// io::InputError / io::UsageError on bad input or options.
 Plan make_plan(const Options& opt);
 
+/// The scene of a Run case: the base scene with the case's cell, its variant's reading and its wind
+/// seed applied (scene_applier.h), simulated for Settings::simulated_time.
+Scene run_case_scene(const Plan& plan, const CaseSpec& c);
+
 /// The sweep of a plan (its run_case; results as JSON).
 Sweep make_sweep(const std::shared_ptr<const Plan>& plan);
 

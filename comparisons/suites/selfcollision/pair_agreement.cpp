@@ -5,6 +5,13 @@
 
 namespace tecido::suites::selfcollision {
 
+PairDifference pair_difference(const std::vector<std::array<int, 2>>& got, const std::vector<std::array<int, 2>>& truth) {
+  PairDifference d;
+  std::set_difference(truth.begin(), truth.end(), got.begin(), got.end(), std::back_inserter(d.missed));
+  std::set_difference(got.begin(), got.end(), truth.begin(), truth.end(), std::back_inserter(d.extra));
+  return d;
+}
+
 void PairAgreement::add(const std::vector<std::array<int, 2>>& got, const std::vector<std::array<int, 2>>& truth) {
   std::vector<std::array<int, 2>> common;
   std::set_intersection(got.begin(), got.end(), truth.begin(), truth.end(), std::back_inserter(common));

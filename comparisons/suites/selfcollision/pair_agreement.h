@@ -1,9 +1,19 @@
 #pragma once
-/// How a set of reported triangle pairs compares with the true set: precision and recall.
+/// How a set of reported triangle pairs compares with the true set: precision and recall, and
+/// which pairs differ.
 #include <array>
 #include <vector>
 
 namespace tecido::suites::selfcollision {
+
+/// The pairs of a frame an engine got wrong: the true pairs it did not report and the pairs it
+/// reported that are not true, each sorted.
+struct PairDifference {
+  std::vector<std::array<int, 2>> missed, extra;
+};
+
+/// `got` against `truth` (both sorted, without duplicates).
+PairDifference pair_difference(const std::vector<std::array<int, 2>>& got, const std::vector<std::array<int, 2>>& truth);
 
 /// Pair-set agreement summed over frames.
 struct PairAgreement {

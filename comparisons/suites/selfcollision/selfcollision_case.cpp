@@ -9,7 +9,7 @@ namespace tecido::suites::selfcollision {
 
 namespace {
 EngineScore score_engine(const SelfCollisionEngine& eng, const FrameSet& set,
-                         const std::vector<std::vector<TrianglePair>>& truth) {
+                         const std::vector<std::vector<TrianglePair>>& truth, const Settings& s, KeptDisagreements& kept) {
   EngineScore e;
   e.engine = eng.name;
   for (std::size_t i = 0; i < set.frames.size(); ++i) {
@@ -19,6 +19,7 @@ EngineScore score_engine(const SelfCollisionEngine& eng, const FrameSet& set,
     if (!got) continue;
     ++e.answered;
     e.pairs.add(*got, truth[i]);
+    kept.note(s, e.engine, set, static_cast<int>(i), *got, truth[i]);
   }
   return e;
 }
@@ -27,7 +28,7 @@ EngineScore score_engine(const SelfCollisionEngine& eng, const FrameSet& set,
 bool every_pair(const Triangle&, const Triangle&) { return true; }
 
 EngineScore score_outside(outside::OutsideEngine& eng, const FrameSet& set,
-                          const std::vector<std::vector<TrianglePair>>& truth) {
+                          const std::vector<std::vector<TrianglePair>>& truth, const Settings& s, KeptDisagreements& kept) {
   EngineScore e;
   e.engine = eng.name();
   for (std::size_t i = 0; i < set.frames.size(); ++i) {
@@ -35,6 +36,7 @@ EngineScore score_outside(outside::OutsideEngine& eng, const FrameSet& set,
     if (!got) continue;
     ++e.answered;
     e.pairs.add(*got, truth[i]);
+    kept.note(s, e.engine, set, static_cast<int>(i), *got, truth[i]);
   }
   return e;
 }
@@ -78,8 +80,10 @@ SourceScore score_source(const FrameSource& source, const Settings& s, const std
     out.frames_with_contact += t->empty() ? 0 : 1;
     true_pairs.push_back(std::move(*t));
   }
-  for (const SelfCollisionEngine& eng : engines) out.engines.push_back(score_engine(eng, set, true_pairs));
-  for (const outside::OutsideEnginePtr& eng : outside) out.engines.push_back(score_outside(*eng, set, true_pairs));
+  for (const SelfCollisionEngine& eng : engines)
+    out.engines.push_back(score_engine(eng, set, true_pairs, s, out.disagreements));
+  for (const outside::OutsideEnginePtr& eng : outside)
+    out.engines.push_back(score_outside(*eng, set, true_pairs, s, out.disagreements));
   return out;
 }
 
@@ -92,7 +96,7 @@ io::Json source_score_json(const SourceScore& s) {
                        {"missed", p.missed}, {"seconds", num(e.seconds)}});
   }
   return {{"frames", s.frames}, {"frames_with_contact", s.frames_with_contact}, {"true_pairs", s.true_pairs},
-          {"triangles", s.triangles}, {"engines", engines}};
+          {"triangles", s.triangles}, {"engines", engines}, {"disagreements", kept_json(s.disagreements)}};
 }
 
 SourceScore source_score_from_json(const io::Json& j) {
@@ -114,6 +118,7 @@ SourceScore source_score_from_json(const io::Json& j) {
     e.seconds = get_num(je.at("seconds"));
     s.engines.push_back(std::move(e));
   }
+  s.disagreements = kept_from_json(j.at("disagreements"));
   return s;
 }
 

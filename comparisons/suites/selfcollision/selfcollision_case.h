@@ -4,6 +4,7 @@
 #include "comparisons/engines/outside/outside_engine.h"
 #include "comparisons/engines/self_collision_engines.h"
 #include "comparisons/io/json_reader.h"
+#include "comparisons/suites/selfcollision/frame_disagreements.h"
 #include "comparisons/suites/selfcollision/frame_sources.h"
 #include "comparisons/suites/selfcollision/pair_agreement.h"
 
@@ -25,6 +26,7 @@ struct SourceScore {
   std::string error;
   long frames = 0, frames_with_contact = 0, true_pairs = 0, triangles = 0;
   std::vector<EngineScore> engines;
+  KeptDisagreements disagreements;  ///< the frames where an engine's pairs differ from the truth's
 };
 
 /// Records `source`'s frames, asks `truth` (whose unanswered frame is an error) and each engine,

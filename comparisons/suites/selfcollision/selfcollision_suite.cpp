@@ -1,10 +1,14 @@
 #include "comparisons/suites/selfcollision/selfcollision_suite.h"
 
 #include "comparisons/engines/outside/outside_engines.h"
+#include "comparisons/io/atomic_file.h"
+#include "comparisons/suites/agreement/disagreement_page.h"
 
 #include "comparisons/suites/selfcollision/check_plan.h"
 #include "comparisons/suites/selfcollision/selfcollision_case.h"
 #include "comparisons/suites/selfcollision/selfcollision_report.h"
+
+#include <fmt/format.h>
 
 #include <memory>
 #include <stdexcept>
@@ -20,6 +24,7 @@ using selfcollision::SourceScore;
 struct Plan {
   selfcollision::Settings settings;
   std::string data_dir;
+  std::string out_dir;  ///< where selfcollision/disagreements.json and its page go
   std::vector<FrameSource> sources;
   std::vector<SelfCollisionEngine> engines;
   std::vector<outside::OutsideEnginePtr> outside;  ///< scored after `engines`
@@ -35,6 +40,7 @@ std::shared_ptr<Plan> make_plan(const SuiteContext& ctx, const selfcollision::Se
   plan->outside = std::move(outside);
   plan->settings = settings;
   plan->data_dir = ctx.data_dir;
+  plan->out_dir = ctx.out_dir;
   plan->sources = std::move(sources);
   plan->engines = std::move(engines);
   for (const char* name : {"exact", "core-brute"})
@@ -63,6 +69,29 @@ std::string outside_markdown(const Plan& plan) {
          md + "\n";
 }
 
+const char* const kDisagreementFile = "selfcollision/disagreements.json";
+
+/// Writes OUT/selfcollision/disagreements.json and its page; returns the report's paragraph.
+std::string write_disagreements(const Plan& plan, const std::vector<SourceScore>& scores, std::vector<PageLink>& views) {
+  std::vector<selfcollision::KeptDisagreements> kept;
+  long found = 0, written = 0;
+  for (const SourceScore& sc : scores) {
+    kept.push_back(sc.disagreements);
+    found += sc.disagreements.found;
+    written += static_cast<long>(sc.disagreements.kept.size());
+  }
+  const io::Json doc = selfcollision::disagreements_json(plan.sources, kept, plan.truth->name, plan.settings);
+  io::write_file_atomic(plan.out_dir + "/" + kDisagreementFile, doc.dump() + "\n");
+  const io::Json page = selfcollision::disagreements_page_doc(doc);
+  views = agreement::write_disagreement_page(plan.out_dir, kDisagreementFile, "selfcollision", "entries", doc, &page);
+  return fmt::format(
+      "{} of {} frames of an engine whose pairs differ from `{}`'s are in `{}` (at most {} per source, each with the "
+      "frame's positions, the true pairs the engine missed and the pairs it reported that are not true, at most {} "
+      "of each); `selfcollision/disagreements.html` draws them.\n\n",
+      written, found, plan.truth->name, kDisagreementFile, plan.settings.max_entries_per_source,
+      plan.settings.max_pairs_per_list);
+}
+
 SuiteResult assemble(const Plan& plan, const std::vector<io::Json>& results) {
   std::vector<SourceScore> scores;
   CheckList checks = plan.checks;
@@ -75,7 +104,8 @@ SuiteResult assemble(const Plan& plan, const std::vector<io::Json>& results) {
   const std::string& truth = plan.truth->name;
   res.markdown = selfcollision::method_markdown(plan.settings, plan.sources, scores, truth) + outside_markdown(plan) +
                  selfcollision::score_table(plan.sources, scores) + "\n" +
-                 selfcollision::conclusions_markdown(plan.sources, scores, truth);
+                 selfcollision::conclusions_markdown(plan.sources, scores, truth) + "\n" +
+                 write_disagreements(plan, scores, res.views);
   res.data = selfcollision::scores_json(plan.sources, scores);
   res.checks = checks.finish();
   return res;

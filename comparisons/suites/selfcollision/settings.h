@@ -1,6 +1,8 @@
 #pragma once
 /// What the `selfcollision` suite runs (its own settings; the tolerance file holds only the lower
 /// bounds of precision and recall, /selfcollision/<engine>_min). Printed in the report.
+#include <cstddef>
+
 namespace tecido::suites::selfcollision {
 
 struct Settings {
@@ -13,6 +15,12 @@ struct Settings {
   int crumple_grid = 24;              ///< crumple: an n x n cloth (16 with --quick)
   long crumple_steps = 1500;          ///< crumple: steps simulated at most (dt 2 ms: 3 s)
   long crumple_every = 25;            ///< crumple: steps between candidate frames
+  /// The disagreement file (frame_disagreements.h) keeps, per source, the first this many (engine,
+  /// frame) entries where an engine's pairs differ from the truth's, engine order then frame order,
+  /// each with its frame's positions ...
+  std::size_t max_entries_per_source = 16;
+  /// ... and, per entry, at most this many missed and this many extra pairs (the full counts kept).
+  std::size_t max_pairs_per_list = 500;
 };
 
 inline Settings settings(bool quick) {

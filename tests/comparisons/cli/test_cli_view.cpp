@@ -1,11 +1,13 @@
 // The pages the CLI writes: `tecido view` on a user's file (bad input: one line, exit 2, nothing
 // written; markup in an id lands in the data file as a JSON string, never in the HTML), `tecido run
-// --out` (index.html beside the frames). The pages themselves are tested in a browser
+// --out` (index.html beside the frames), `tecido experiment self-contact --runs LIST --view` (a run's
+// page per cell, the options it refuses). The pages themselves are tested in a browser
 // (web/test/run_all.mjs, scripts/browser_test.sh).
 #include "comparisons/io/source_dir.h"
 #include "tests/support/cli_runner.h"
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <filesystem>
@@ -63,6 +65,46 @@ TEST(CliView, RunWritesIndexHtmlBesideItsFrames) {
   const std::string data = testing::slurp(dir / "out" / "index.data.js");
   EXPECT_EQ(data.rfind("window.TECIDO_VIEW = {", 0), 0u);
   EXPECT_NE(data.find("\"frames\":21"), std::string::npos);
+  fs::remove_all(dir);
+}
+
+/// A page's data: the JSON of its NAME.data.js.
+nlohmann::json page_data(const fs::path& file) {
+  const std::string js = testing::slurp(file);
+  const std::string head = "window.TECIDO_VIEW = ";
+  EXPECT_EQ(js.rfind(head, 0), 0u);
+  return nlohmann::json::parse(js.substr(head.size(), js.rfind(';') - head.size()));
+}
+
+TEST(CliView, ExperimentViewWritesEachCellsFirstRunAsAPage) {
+  const auto dir = testing::temp_dir("view-experiment");
+  const auto r = run_cli("experiment self-contact --quick --runs 0,5 --view --out " + quoted((dir / "out").string()));
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_FALSE(fs::exists(dir / "out" / "experiment.json"));  // the ensemble did not run
+  // Cell 0: step 0.02 s, a frame every step over --quick's 2 s, and the start. Cell 5: 0.02 s too (mode 1).
+  for (const char* cell : {"0", "5"}) {
+    ASSERT_TRUE(fs::exists(dir / "out" / "runs" / cell / "index.html")) << cell;
+    const auto data = page_data(dir / "out" / "runs" / cell / "index.data.js");
+    EXPECT_EQ(data["kind"], "run");
+    EXPECT_EQ(data["frames"], 101) << cell;
+    EXPECT_EQ(data["steps"][100], 100);
+    EXPECT_DOUBLE_EQ(data["times"][100].get<double>(), 2.0);
+    EXPECT_EQ(data["nodes"], 256);  // the fig. 21 cloth, 16 x 16
+    EXPECT_NE(data["title"].get<std::string>().find("run " + std::string(cell)), std::string::npos);
+  }
+  fs::remove_all(dir);
+}
+
+TEST(CliView, ExperimentViewNeedsRunsAndRefusesShardsCalibrationAndForcedContact) {
+  const auto dir = testing::temp_dir("view-experiment-options");
+  const std::string out = " --out " + quoted((dir / "out").string());
+  for (const std::string args : {"self-contact --quick --view", "self-contact --quick --runs 0 --view --shard 0/2",
+                                 "self-contact --quick --runs 0 --view --calibrate", "forced-contact --quick --view"}) {
+    const auto r = run_cli("experiment " + args + out);
+    EXPECT_EQ(r.code, 2) << args << ": " << r.err;
+    EXPECT_NE(r.err.find("--view"), std::string::npos) << args << ": " << r.err;
+    EXPECT_FALSE(fs::exists(dir / "out" / "runs")) << args;
+  }
   fs::remove_all(dir);
 }
 

@@ -7,6 +7,15 @@
 namespace tecido::suites::selfcollision {
 namespace {
 
+TEST(PairAgreement, DifferenceNamesTheMissedAndTheExtraPairs) {
+  // The same planted frame: (1,7) missed, (3,4) and (6,8) invented.
+  const PairDifference d = pair_difference({{0, 5}, {2, 9}, {3, 4}, {6, 8}}, {{0, 5}, {1, 7}, {2, 9}});
+  EXPECT_EQ(d.missed, (std::vector<std::array<int, 2>>{{1, 7}}));
+  EXPECT_EQ(d.extra, (std::vector<std::array<int, 2>>{{3, 4}, {6, 8}}));
+  const PairDifference same = pair_difference({{0, 5}}, {{0, 5}});
+  EXPECT_TRUE(same.missed.empty() && same.extra.empty());
+}
+
 TEST(PairAgreement, PlantedDisagreements) {
   // Truth {(0,5),(1,7),(2,9)}; the engine misses (1,7) and invents (3,4) and (6,8).
   PairAgreement a;

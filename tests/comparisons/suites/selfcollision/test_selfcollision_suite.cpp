@@ -2,7 +2,8 @@
 // source whose case throws fails its own checks with the reason; an engine that invents pairs is
 // scored by hand-countable numbers; sharded runs merge into the same checks and data; and with
 // every number of its tolerance section changed it reports the same checks after the same work,
-// exiting 1 when a band excludes the values.
+// exiting 1 when a band excludes the values; its disagreement file names each engine's invented
+// and dropped pairs on the frames where it erred, with those frames' positions.
 #include "comparisons/io/source_dir.h"
 #include "comparisons/suites/selfcollision/selfcollision_suite.h"
 
@@ -40,9 +41,19 @@ std::optional<std::vector<TrianglePair>> brute_plus_one(const std::vector<Vec3>&
   return p;
 }
 
+/// The truth without its first pair.
+std::optional<std::vector<TrianglePair>> brute_minus_first(const std::vector<Vec3>& x,
+                                                           const std::vector<std::array<int, 3>>& t) {
+  auto p = self_collision_pairs_brute(x, t);
+  if (!p.empty()) p.erase(p.begin());
+  return p;
+}
+
 TEST(SelfcollisionSuite, AThrowingSourceFailsItsChecksAndAnInventedPairCosts) {
   const Tolerances tol(io::Json::parse(R"({"selfcollision":{"core_min":1,"plus-one_min":0}})"), "tol.json");
+  const auto dir = testing::temp_dir("selfcollision-throwing");
   SuiteContext ctx;
+  ctx.out_dir = dir.string();
   ctx.tolerances = &tol;
   ctx.data_dir = std::string(TECIDO_SOURCE_DIR) + "/data";
   const Settings set = selfcollision::settings(true);
@@ -74,6 +85,55 @@ TEST(SelfcollisionSuite, AThrowingSourceFailsItsChecksAndAnInventedPairCosts) {
   EXPECT_DOUBLE_EQ(r.checks[4].value, static_cast<double>(truth) / static_cast<double>(truth + extra));
   EXPECT_DOUBLE_EQ(r.checks[5].value, 1.0);
   EXPECT_NE(r.markdown.find(std::to_string(extra) + " pairs that do not intersect"), std::string::npos) << r.markdown;
+  std::filesystem::remove_all(dir);
+}
+
+TEST(SelfcollisionSuite, DisagreementFileNamesTheInventedAndTheDroppedPairs) {
+  const Tolerances tol(io::Json::parse(R"({"selfcollision":{"plus-one_min":0,"minus-first_min":0}})"), "tol.json");
+  const auto dir = testing::temp_dir("selfcollision-disagreements");
+  SuiteContext ctx;
+  ctx.out_dir = dir.string();
+  ctx.tolerances = &tol;
+  ctx.data_dir = std::string(TECIDO_SOURCE_DIR) + "/data";
+  const Settings set = selfcollision::settings(true);
+  const std::vector<SelfCollisionEngine> engines = {
+      {"plus-one", &brute_plus_one}, {"minus-first", &brute_minus_first}, {"core-brute", &brute}};
+  const Sweep s = selfcollision_sweep_for(ctx, set, {selfcollision::frame_sources().at(1)}, engines);
+  const SuiteResult r = s.assemble(run_sweep_cases(s, {0}, 1, "t", false));
+  // By hand: plus-one errs on the frames without the pair (0, last), minus-first on those with a true pair.
+  const auto crumple = selfcollision::crumple_frames(set, ctx.data_dir);
+  const TrianglePair last{0, static_cast<int>(crumple.triangles.size()) - 1};
+  nlohmann::json want = nlohmann::json::array();
+  for (int pass = 0; pass < 2; ++pass)
+    for (std::size_t f = 0; f < crumple.frames.size(); ++f) {
+      const auto p = self_collision_pairs_brute(crumple.frames[f].x, crumple.triangles);
+      if (pass == 0 && !std::binary_search(p.begin(), p.end(), last))
+        want.push_back({{"engine", "plus-one"}, {"frame", f}, {"missed", nlohmann::json::array()}, {"extra", {last}}});
+      if (pass == 1 && !p.empty())
+        want.push_back({{"engine", "minus-first"}, {"frame", f}, {"missed", {p.front()}}, {"extra", nlohmann::json::array()}});
+    }
+  ASSERT_GE(want.size(), 2u);
+  const auto doc = nlohmann::json::parse(testing::slurp(dir / "selfcollision" / "disagreements.json"));
+  EXPECT_EQ(doc["truth"], "core-brute");
+  nlohmann::json got = nlohmann::json::array();
+  for (const auto& e : doc["entries"])
+    got.push_back({{"engine", e["engine"]}, {"frame", e["frame"]}, {"missed", e["missed"]}, {"extra", e["extra"]}});
+  if (want.size() > set.max_entries_per_source) want.erase(want.begin() + static_cast<long>(set.max_entries_per_source), want.end());
+  EXPECT_EQ(got, want);
+  // Each kept frame's positions are the recorded ones, exactly.
+  ASSERT_EQ(doc["sources"].size(), 1u);
+  EXPECT_EQ(doc["sources"][0]["triangles"], nlohmann::json(crumple.triangles));
+  for (const auto& f : doc["sources"][0]["frames"]) {
+    const auto& x = crumple.frames.at(f["frame"].get<std::size_t>()).x;
+    ASSERT_EQ(f["x"].size(), 3 * x.size());
+    for (std::size_t i = 0; i < x.size(); ++i) EXPECT_EQ(f["x"][3 * i + 1].get<double>(), x[i][1]);
+  }
+  ASSERT_FALSE(r.views.empty());
+  EXPECT_EQ(r.views[0].href, "selfcollision/disagreements.html");
+  EXPECT_EQ(r.views.size(), 1 + got.size());
+  EXPECT_TRUE(std::filesystem::exists(dir / "selfcollision" / "disagreements.data.js"));
+  EXPECT_NE(r.markdown.find("selfcollision/disagreements.json"), std::string::npos);
+  std::filesystem::remove_all(dir);
 }
 
 TEST(SelfcollisionSuite, ShardsMergeIntoTheSameChecksAndData) {
@@ -87,6 +147,11 @@ TEST(SelfcollisionSuite, ShardsMergeIntoTheSameChecksAndData) {
   const auto merged = nlohmann::json::parse(testing::slurp(dir / "merged" / "report.json"));
   EXPECT_EQ(full["suites"][0]["checks"], merged["suites"][0]["checks"]);
   EXPECT_EQ(testing::data_without_timings(full), testing::data_without_timings(merged));
+  // No built-in engine disagrees here: the file is written all the same, with no entry.
+  EXPECT_EQ(testing::slurp(dir / "full" / "selfcollision" / "disagreements.json"),
+            testing::slurp(dir / "merged" / "selfcollision" / "disagreements.json"));
+  const auto doc = nlohmann::json::parse(testing::slurp(dir / "full" / "selfcollision" / "disagreements.json"));
+  EXPECT_EQ(doc["entries"], nlohmann::json::array());
   std::filesystem::remove_all(dir);
 }
 
