@@ -11,6 +11,8 @@
 
 #include <pybind11/numpy.h>
 
+#include <cmath>
+
 namespace tecido::python {
 
 namespace {
@@ -57,6 +59,35 @@ std::vector<py::object> batch_answers(const py::object& r, std::size_t n) {
   out.reserve(n);
   for (std::size_t k = 0; k < n; ++k) out.push_back(s[k]);
   return out;
+}
+
+/// A tri_tri answer whose meaning needs no JSON reply: True, False or None, exactly what
+/// parse_tri_tri makes of {"hit": b}. Nothing for any other answer (the JSON path decides it).
+std::optional<std::optional<bool>> direct_hit(py::handle r) {
+  if (PyBool_Check(r.ptr())) return std::optional<bool>(r.ptr() == Py_True);
+  if (r.is_none()) return std::optional<bool>();
+  return std::nullopt;
+}
+
+/// A ccd answer whose meaning needs no JSON reply: {"hit": b, "toi": t} or (b, t) with b True,
+/// False or None and t None or a finite float, exactly what parse_ccd makes of the same reply
+/// (hit true with a toi of None is an error: left to the JSON path, which words it).
+std::optional<std::optional<CcdAnswer>> direct_ccd(py::handle r) {
+  PyObject *hit = nullptr, *toi = nullptr;
+  if (PyDict_CheckExact(r.ptr()) && PyDict_Size(r.ptr()) == 2) {
+    hit = PyDict_GetItemString(r.ptr(), "hit");
+    toi = PyDict_GetItemString(r.ptr(), "toi");
+  } else if (PyTuple_CheckExact(r.ptr()) && PyTuple_GET_SIZE(r.ptr()) == 2) {
+    hit = PyTuple_GET_ITEM(r.ptr(), 0);
+    toi = PyTuple_GET_ITEM(r.ptr(), 1);
+  }
+  if (!hit || !toi) return std::nullopt;
+  const bool toi_none = toi == Py_None, toi_finite = PyFloat_CheckExact(toi) && std::isfinite(PyFloat_AS_DOUBLE(toi));
+  if (!toi_none && !toi_finite) return std::nullopt;
+  if (hit == Py_None) return std::optional<CcdAnswer>();
+  if (hit == Py_False) return std::optional<CcdAnswer>(CcdAnswer{false, 0.0});
+  if (hit == Py_True && toi_finite) return std::optional<CcdAnswer>(CcdAnswer{true, PyFloat_AS_DOUBLE(toi)});
+  return std::nullopt;
 }
 
 }  // namespace
@@ -128,6 +159,7 @@ std::vector<std::optional<bool>> PythonEngine::tri_tri(const std::vector<outside
   std::vector<std::optional<bool>> out;
   out.reserve(queries.size());
   auto parse = [&](py::handle r, std::size_t k, const char* op) {
+    if (const auto direct = direct_hit(r)) return out.push_back(*direct);
     try {
       out.push_back(outside::parse_tri_tri(answer_json(r, {"hit"})));
     } catch (const outside::ProtocolError& p) {
@@ -166,6 +198,7 @@ std::vector<std::optional<CcdAnswer>> PythonEngine::ccd(const std::vector<CcdQue
   std::vector<std::optional<CcdAnswer>> out;
   out.reserve(queries.size());
   auto parse = [&](py::handle r, std::size_t k, const char* op) {
+    if (const auto direct = direct_ccd(r)) return out.push_back(*direct);
     try {
       out.push_back(outside::parse_ccd(answer_json(r, {"hit", "toi"})));
     } catch (const outside::ProtocolError& p) {
