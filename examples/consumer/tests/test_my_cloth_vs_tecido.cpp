@@ -21,7 +21,7 @@ tc::Scene hanging_cloth() {
   tc::ClothGrid cloth;
   cloth.rows = cloth.cols = 8;
   cloth.spacing = 0.05;                  // [m]
-  cloth.axis_v = -Vec3::UnitZ();         // rows hang down
+  cloth.axis_v = Vec3::UnitY();          // horizontal: it drapes as it falls
   cloth.total_mass = 0.2;                // [kg]
   cloth.stiffness = 50.0;                // [N/m], one edge apart
   cloth.bend_stiffness = 10.0;           // two edges apart
@@ -74,8 +74,12 @@ TEST(MyClothVsTecido, SymplecticEulerStepForStep) {
     worst = std::max(worst, (Vec3(x[3 * p], x[3 * p + 1], x[3 * p + 2]) - tecido_run.positions()[p]).norm());
   std::cout << "largest distance from tecido's positions after 500 steps: " << worst << " m\n";
   EXPECT_LT(worst, 1e-9);
-  // And it moved: the free corners fell.
-  EXPECT_LT(tecido_run.positions()[63].z(), scene.positions()[63].z() - 0.01);
+  // And it moved (the comparison is of a swinging cloth, not of one at rest).
+  double moved = 0.0;
+  for (std::size_t p = 0; p < scene.particle_count(); ++p)
+    moved = std::max(moved, (tecido_run.positions()[p] - scene.positions()[p]).norm());
+  std::cout << "largest distance moved: " << moved << " m\n";
+  EXPECT_GT(moved, 0.01);
 }
 
 TEST(TecidoCloth, DroppedOnAFloorNeverGoesThroughIt) {
