@@ -113,7 +113,8 @@ struct SpringInfo {
   double damping = 0.0;      ///< [N s/m]
 };
 
-/// A scene under construction. Copyable; Simulation takes a copy.
+/// A scene under construction. Copyable; Simulation takes a copy. A moved-from Scene may only be
+/// assigned to or destroyed.
 class Scene {
  public:
   Scene();
@@ -199,7 +200,7 @@ struct SelfCollisionCounts {
   std::size_t pairs_now = 0;     ///< found by the latest check
 };
 
-/// One run of a scene. Move-only.
+/// One run of a scene. Move-only; a moved-from Simulation may only be assigned to or destroyed.
 class Simulation {
  public:
   /// Takes a copy of the scene. Throws std::invalid_argument when it has no particle, or a free
