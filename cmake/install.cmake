@@ -10,7 +10,7 @@ set(TECIDO_INSTALL_CMAKEDIR "${CMAKE_INSTALL_LIBDIR}/cmake/tecido")
 set(TECIDO_INSTALL_DATADIR "${CMAKE_INSTALL_DATADIR}/tecido/data")
 
 install(FILES include/tecido/plugin.h include/tecido/geometry.h include/tecido/core.h include/tecido/referee.h
-              include/tecido/harness.h "${PROJECT_BINARY_DIR}/include/tecido/version.h"
+              include/tecido/simulation.h include/tecido/harness.h "${PROJECT_BINARY_DIR}/include/tecido/version.h"
         DESTINATION "${CMAKE_INSTALL_INCLUDEDIR}/tecido")
 
 # The public names; the detail_ targets are link dependencies of tecido::harness, no API.

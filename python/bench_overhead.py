@@ -11,6 +11,7 @@
     the whole query with the real test is printed too. The door's time per query is a difference
     of runs of N and 1 pairs, less the built-in core engine's difference (reading the pairs file and
     printing the answers), so process start and hello cancel. Goal: in-process >= 20x lower.
+(c) tecido's side of a batch per answer, bools read directly against dicts read through a JSON reply.
 
 Run from the repository's root: PYTHONPATH=build/python /usr/bin/python3 python/bench_overhead.py
 [--tecido build/bin/tecido] [--pairs 100000] [--queries 2000]
@@ -146,6 +147,35 @@ def in_process(n, tecido_bin, repeats):
     os.rmdir(tmp)
 
 
+class Canned:
+    """A batched engine answering every batch with one prepared list (no work, no conversion in
+    Python): what remains is tecido's side of a batch, building the arrays and reading the answers."""
+    name = "canned"
+
+    def __init__(self, answers):
+        self.answers = answers
+
+    def tri_tri_batch(self, a, b):
+        return self.answers
+
+
+def answer_reading(n, repeats):
+    """(c) tecido's side of a batch per answer, in the same run: answers as Python bools or
+    {"hit": bool} (read directly), as numpy bools (read through a JSON reply built from the value,
+    the path a Python bool took before the direct reading) and as {"hit": numpy bool} (through the
+    JSON text of the dict, the path a dict answer, e.g. the example's ccd, took before)."""
+    a, b = pairs(n, 3)
+    hits = [bool(k % 3 == 0) for k in range(n)]
+    forms = (("bool", hits), ("{hit: bool}", [{"hit": h} for h in hits]), ("numpy bool", [np.bool_(h) for h in hits]),
+             ("{hit: numpy bool}", [{"hit": np.bool_(h)} for h in hits]))
+    print(f"(c) tecido's side of a batch of {n} answers, per answer (best of {repeats}):")
+    base = None
+    for form, answers in forms:
+        t = best(lambda: tecido.tri_tri(a, b, Canned(answers)), repeats) / n
+        base = base or t
+        print(f"      {form:19s} {t * 1e6:8.3f} us   {t / base:6.1f}x the first")
+
+
 def main():
     p = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     p.add_argument("--tecido", default=str(ROOT / "build" / "bin" / "tecido"))
@@ -156,6 +186,7 @@ def main():
     print(f"tecido {tecido.__version__} (commit {tecido.commit}), Python {sys.version.split()[0]}")
     vectorised(o.pairs, o.repeats)
     in_process(o.queries, o.tecido, max(3, o.repeats // 2))
+    answer_reading(o.queries, o.repeats)
 
 
 if __name__ == "__main__":

@@ -3,6 +3,7 @@
 #include "comparisons/io/input_error.h"
 #include "comparisons/io/limits.h"
 #include "reference/exact_ccd.h"
+#include "reference/exact_self_contacts.h"
 
 #include <stdexcept>
 
@@ -36,12 +37,7 @@ ContinuousContacts continuous_self_collision_contacts(const std::string& name, c
   if (name == "core-brute") return continuous_self_collision_brute(x0, x1, triangles);
   if (name == "exact") return continuous_self_collision_brute(x0, x1, triangles, &exact_continuous_test);
   if (name != "core") throw std::invalid_argument("no continuous self-collision engine \"" + name + "\"");
-  ContinuousSelfCollisionDetector det(triangles, x0);
-  det.set_threads(threads);
-  const ContinuousContacts& candidates = det.detect(x0, x1);
-  // The referee's filter decides nearly every candidate; exact arithmetic only where it cannot
-  // (reference::exact_ccd_hit: whether, not when).
-  return filter_contacts(candidates, x0, x1, triangles, &reference::exact_ccd_hit, threads);
+  return reference::exact_self_contacts(x0, x1, triangles, threads);
 }
 
 }  // namespace tecido

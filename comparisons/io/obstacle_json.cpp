@@ -3,9 +3,8 @@
 #include "comparisons/io/limits.h"
 #include "comparisons/io/obj_mesh.h"
 #include "comparisons/io/scene_json.h"
+#include "core/geometry/obstacle_start.h"
 #include "core/geometry/orient_predicates.h"
-#include "core/geometry/segment_box.h"
-#include "core/geometry/segment_sphere.h"
 
 #include <filesystem>
 #include <sstream>
@@ -173,17 +172,10 @@ bool obstacles_use_particle_k(const Json& obstacles) {
 void check_particles_outside(const JsonReader& r, const std::vector<Obstacle>& obstacles, const std::string& where,
                              const std::vector<Vec3>& x, const std::vector<std::uint8_t>& pinned) {
   for (std::size_t k = 0; k < obstacles.size(); ++k) {
-    const Obstacle& o = obstacles[k];
-    if (o.kind == ObstacleKind::Mesh) continue;
-    for (std::size_t i = 0; i < x.size(); ++i) {
-      if (pinned[i]) continue;
-      const Vec3 d = x[i] - o.center;
-      const bool inside = o.kind == ObstacleKind::Sphere ? inside_sphere(d, o.radius)
-                                                         : inside_box(o.orientation.transpose() * d, o.half_extents);
-      if (inside)
-        r.fail(child(where, k), "free particle " + std::to_string(i) + " starts inside the " +
-                                    obstacle_kind_name(o.kind) + " (spheres and boxes are solid)");
-    }
+    const int i = first_free_particle_inside(obstacles[k], x, pinned);
+    if (i >= 0)
+      r.fail(child(where, k), "free particle " + std::to_string(i) + " starts inside the " +
+                                  obstacle_kind_name(obstacles[k].kind) + " (spheres and boxes are solid)");
   }
 }
 

@@ -5,6 +5,8 @@
 /// Types and what "exact" means: tecido/geometry.h.
 #include <tecido/geometry.h>
 
+#include <vector>
+
 namespace tecido::core {
 
 /// Whether the closed triangles a and b share at least one point (crossing, touching at a vertex
@@ -27,5 +29,21 @@ PlaneHit segment_plane(const Rectangle& r, const Vec3& from, const Vec3& to);
 /// first time of contact (typically within 4e-14 of it on a transversal crossing). NaN or
 /// infinite input answers a hit at toi = 0.
 Contact ccd(const Motion& m);
+
+/// The pairs (i, j), i < j, of faces of the mesh (V, F) that intersect, closed triangles
+/// (touching counts), leaving out pairs that share a vertex index; sorted. Exact (tri_tri on
+/// every candidate of a box tree): the answer of `tecido selfcollide --mesh M.obj` (engine core).
+/// Throws std::domain_error for a non-finite vertex, std::invalid_argument for a face naming a
+/// vertex outside V or repeating one.
+std::vector<FacePair> self_collisions(const std::vector<Vec3>& V, const Faces& F);
+
+/// The vertex-face and edge-edge pairs of the mesh F moving linearly from V0 to V1 (same vertex
+/// count) that core's continuous test (ccd above) says touch: conservative, never a contact
+/// missed; a near miss within ccd's tolerance may be included. The answer of
+/// `tecido selfcollide --mesh V0.obj --to V1.obj --engines core-brute` (core's test on every pair;
+/// computed here by a box tree, with the same answer). tecido::referee::continuous_self_collisions
+/// confirms each pair exactly. Throws as self_collisions does (and std::invalid_argument for
+/// frames of different sizes).
+SelfContacts continuous_self_collisions(const std::vector<Vec3>& V0, const std::vector<Vec3>& V1, const Faces& F);
 
 }  // namespace tecido::core

@@ -9,6 +9,7 @@
 #include <Eigen/Core>
 
 #include <array>
+#include <vector>
 
 namespace tecido {
 
@@ -57,6 +58,24 @@ struct Motion {
 struct Contact {
   bool hit = false;
   double toi = 0.0;
+};
+
+/// A triangle mesh's faces: three 0-based vertex indices each, distinct, in [0, vertex count).
+using Faces = std::vector<std::array<int, 3>>;
+
+/// Two faces (i < j) of a mesh that intersect (self_collisions).
+using FacePair = std::array<int, 2>;
+
+/// A mesh edge (a, b), a < b, as vertex indices.
+using Edge = std::array<int, 2>;
+
+/// The contacts of one mesh moving linearly over a step (continuous_self_collisions): vertex-face
+/// pairs (vertex, face), the vertex not a corner of the face, and edge-edge pairs ((a, b), (c, d)),
+/// a < b, c < d, (a, b) < (c, d), the edges sharing no vertex; each list sorted lexicographically.
+/// The same lists as `tecido selfcollide --to --json` prints.
+struct SelfContacts {
+  std::vector<std::array<int, 2>> vertex_face;
+  std::vector<std::array<Edge, 2>> edge_edge;
 };
 
 }  // namespace tecido

@@ -17,6 +17,7 @@
 ///    engines beside tecido's referee and get the report (run_suites).
 #include <tecido/geometry.h>
 #include <tecido/plugin.h>
+#include <tecido/simulation.h>
 
 #include <cstddef>
 #include <cstdint>
@@ -153,5 +154,11 @@ struct Report {
 /// table, a name clashing with a built-in engine; std::runtime_error when a suite fails to run.
 Report run_suites(const std::vector<std::string>& suites, const std::vector<tecido_engine>& engines,
                   const SuiteOptions& options = {});
+
+/// A scene file (docs/design.md section 3; data/scenes/ has examples) read as `tecido run` reads
+/// it, every value validated, as a tecido::core::Scene to simulate in code (its "steps" is
+/// scene.steps()). Throws std::invalid_argument for bad content, std::runtime_error when the file
+/// cannot be read, each with the command line's one-line message ("FILE: /json/pointer: problem").
+core::Scene load_scene(const std::string& path);
 
 }  // namespace tecido::harness

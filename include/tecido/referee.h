@@ -7,6 +7,8 @@
 /// coordinate is NaN or infinite.
 #include <tecido/geometry.h>
 
+#include <vector>
+
 namespace tecido::referee {
 
 /// Whether the closed triangles a and b share at least one point, touching included; a
@@ -32,5 +34,13 @@ struct ExactContact {
 /// exactly (roots of the coplanarity cubic isolated exactly; coplanar and degenerate motion
 /// included).
 ExactContact ccd(const Motion& m);
+
+/// The vertex-face and edge-edge pairs of the mesh F moving linearly from V0 to V1 that touch,
+/// decided exactly (core's conservative candidates, tecido::core::continuous_self_collisions,
+/// each confirmed by the exact referee): the answer of `tecido selfcollide --mesh V0.obj --to
+/// V1.obj`. `threads` >= 1 (the answer does not depend on it). Throws std::domain_error for a
+/// non-finite vertex, std::invalid_argument for a bad face, frames of different sizes or threads.
+SelfContacts continuous_self_collisions(const std::vector<Vec3>& V0, const std::vector<Vec3>& V1, const Faces& F,
+                                        int threads = 1);
 
 }  // namespace tecido::referee

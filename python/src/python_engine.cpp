@@ -11,6 +11,8 @@
 
 #include <pybind11/numpy.h>
 
+#include <cmath>
+
 namespace tecido::python {
 
 namespace {
@@ -57,6 +59,51 @@ std::vector<py::object> batch_answers(const py::object& r, std::size_t n) {
   out.reserve(n);
   for (std::size_t k = 0; k < n; ++k) out.push_back(s[k]);
   return out;
+}
+
+/// A tri_tri answer whose meaning needs no JSON reply: True, False or None, alone or as
+/// {"hit": b}, exactly what parse_tri_tri makes of {"hit": b}, written into `out`. False for any
+/// other answer (the JSON path decides it).
+bool direct_hit(py::handle r, std::vector<std::optional<bool>>& out) {
+  if (PyDict_CheckExact(r.ptr()) && PyDict_Size(r.ptr()) == 1) {
+    PyObject* hit = PyDict_GetItemString(r.ptr(), "hit");
+    return hit && (PyBool_Check(hit) || hit == Py_None) && direct_hit(hit, out);
+  }
+  if (PyBool_Check(r.ptr())) {
+    out.push_back(r.ptr() == Py_True);
+    return true;
+  }
+  if (!r.is_none()) return false;
+  out.emplace_back();
+  return true;
+}
+
+/// A ccd answer whose meaning needs no JSON reply: {"hit": b, "toi": t} or (b, t) with b True,
+/// False or None and t None or a finite float, exactly what parse_ccd makes of the same reply,
+/// written into `out` (hit true with a toi of None is an error: left to the JSON path, which
+/// words it). False for any other answer.
+bool direct_ccd(py::handle r, std::vector<std::optional<CcdAnswer>>& out) {
+  PyObject *hit = nullptr, *toi = nullptr;
+  if (PyDict_CheckExact(r.ptr()) && PyDict_Size(r.ptr()) == 2) {
+    hit = PyDict_GetItemString(r.ptr(), "hit");
+    toi = PyDict_GetItemString(r.ptr(), "toi");
+  } else if (PyTuple_CheckExact(r.ptr()) && PyTuple_GET_SIZE(r.ptr()) == 2) {
+    hit = PyTuple_GET_ITEM(r.ptr(), 0);
+    toi = PyTuple_GET_ITEM(r.ptr(), 1);
+  }
+  if (!hit || !toi) return false;
+  const bool toi_finite = PyFloat_CheckExact(toi) && std::isfinite(PyFloat_AS_DOUBLE(toi));
+  if (toi != Py_None && !toi_finite) return false;
+  if (hit == Py_None) {
+    out.emplace_back();
+  } else if (hit == Py_False) {
+    out.push_back(CcdAnswer{false, 0.0});
+  } else if (hit == Py_True && toi_finite) {
+    out.push_back(CcdAnswer{true, PyFloat_AS_DOUBLE(toi)});
+  } else {
+    return false;
+  }
+  return true;
 }
 
 }  // namespace
@@ -128,6 +175,7 @@ std::vector<std::optional<bool>> PythonEngine::tri_tri(const std::vector<outside
   std::vector<std::optional<bool>> out;
   out.reserve(queries.size());
   auto parse = [&](py::handle r, std::size_t k, const char* op) {
+    if (direct_hit(r, out)) return;
     try {
       out.push_back(outside::parse_tri_tri(answer_json(r, {"hit"})));
     } catch (const outside::ProtocolError& p) {
@@ -166,6 +214,7 @@ std::vector<std::optional<CcdAnswer>> PythonEngine::ccd(const std::vector<CcdQue
   std::vector<std::optional<CcdAnswer>> out;
   out.reserve(queries.size());
   auto parse = [&](py::handle r, std::size_t k, const char* op) {
+    if (direct_ccd(r, out)) return;
     try {
       out.push_back(outside::parse_ccd(answer_json(r, {"hit", "toi"})));
     } catch (const outside::ProtocolError& p) {

@@ -175,3 +175,36 @@ def comparable(doc):
     if isinstance(doc, list):
         return [comparable(v) for v in doc]
     return doc
+
+
+class Forms:
+    """Answers in every form the protocol allows: plain (read directly) and others (read through a
+    JSON reply, as the door reads them); each form must mean the same."""
+    name = "forms"
+    HITS = [True, np.bool_(True), {"hit": True}, (True,), False, np.bool_(False), {"hit": False}]
+    CCD = [{"hit": True, "toi": 0.25}, (True, 0.25), [True, 0.25], {"hit": True, "toi": np.float64(0.25)},
+           {"toi": 0.25, "hit": True}, {"hit": False, "toi": None}, (False, 0.75), {"hit": False, "toi": 1}]
+
+    def tri_tri_batch(self, a, b):
+        return self.HITS
+
+    def ccd_batch(self, kinds, t0, t1):
+        return self.CCD
+
+
+class LateToi:
+    name = "late-toi"
+
+    def ccd_batch(self, kinds, t0, t1):
+        return [(True, None)]
+
+
+def test_every_form_of_an_answer_means_the_same():
+    n = len(Forms.HITS)
+    assert tecido.tri_tri(np.zeros((n, 3, 3)), np.zeros((n, 3, 3)), Forms()).tolist() == [True] * 4 + [False] * 3
+    t0, t1 = arrays(*[vertex_face(1.0, -1.0)] * len(Forms.CCD))
+    hits, toi = tecido.ccd(t0, t1, "vf", Forms())
+    assert hits.tolist() == [True] * 5 + [False] * 3
+    assert toi[:5].tolist() == [0.25] * 5
+    with pytest.raises(tecido.EngineError, match=r"engine late-toi .*query 0 \(ccd_batch\): .*toi"):
+        tecido.ccd(*arrays(vertex_face(1.0, -1.0)), "vf", LateToi())
