@@ -115,14 +115,11 @@ void add_thread_goals(std::vector<GoalRow>& out, const std::vector<BenchRow>& ro
 
 /// Long runs: the kept detectors' time per step over detection from scratch.
 void add_long_run_goals(std::vector<GoalRow>& out, const std::vector<BenchRow>& rows, const Goals& g) {
-  for (const char* scene : {"experiment", "fold128", "fold128-last100"})
+  for (const char* scene : {"experiment", "fold128"})
     for (const char* det : {"discrete", "continuous"}) {
       const std::string name = fmt::format("BM_SelfCollisionLongRun/{}/{}", scene, det);
       if (scene == std::string("fold128") && !find_row(rows, name)) continue;  // minutes of its own: only when run
-      std::string id = fmt::format("long_run_{}_{}_kept_over_scratch", scene, det);
-      for (char& c : id)
-        if (c == '-') c = '_';
-      out.push_back({id, fmt::format("long run {}, {} detection: per-step time kept / from scratch", scene, det),
+      out.push_back({fmt::format("long_run_{}_{}_kept_over_scratch", scene, det), fmt::format("long run {}, {} detection: per-step time kept / from scratch", scene, det),
                      counter(rows, name, "reuse_us") / counter(rows, name, "scratch_us"), g.kept_over_scratch, false, "",
                      fmt::format("`{}` counters `reuse_us` / `scratch_us`", name)});
     }
