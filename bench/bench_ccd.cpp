@@ -11,7 +11,9 @@
 //                                                    Bullet has no edge-edge test)
 // Counters (computed outside the timed loop): `hit_share`, the share of queries answered hit;
 // for core, `inclusion_share`, the share that needed the inclusion search (degenerate motion),
-// and `boxes_per_query`, its boxes per query of the set.
+// and `boxes_per_query`, its boxes per query of the set; on the whole mix (no category), against the
+// exact referee's answers: `false_negatives` (a count: zero by construction) and
+// `false_positive_share`, core's hits the referee rejects over the referee's negatives.
 // Another engine is one more line in `registered`: register_engine("fcl", &fn, false, false) gives
 // BM_CCD/fcl/vertex-face and BM_CCD/fcl/edge-edge (reference engines).
 #include "bench/ccd_queries.h"
@@ -22,6 +24,7 @@
 
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
 #include <cstring>
 #include <string>
 #include <vector>
@@ -38,6 +41,21 @@ std::vector<CcdQuery> select(CcdKind kind, const char* category) {
   for (const auto& lq : tecido::bench::default_ccd_query_mix(kind))
     if (category == nullptr || std::strcmp(lq.category, category) == 0) out.push_back(lq.query);
   return out;
+}
+
+CcdAnswer exact_ccd(const CcdQuery& q) { return tecido::reference::to_ccd_answer(tecido::reference::exact_ccd(q)); }
+
+/// Core's false negatives (a count) and false positives over the referee's negatives, on `queries`.
+void set_error_counters(benchmark::State& state, CcdFn fn, const std::vector<CcdQuery>& queries) {
+  std::size_t negatives = 0, false_negatives = 0, false_positives = 0;
+  for (const CcdQuery& q : queries) {
+    const bool truth = exact_ccd(q).hit, hit = fn(q).hit;
+    negatives += !truth;
+    false_negatives += truth && !hit;
+    false_positives += hit && !truth;
+  }
+  state.counters["false_negatives"] = static_cast<double>(false_negatives);
+  state.counters["false_positive_share"] = static_cast<double>(false_positives) / static_cast<double>(std::max<std::size_t>(1, negatives));
 }
 
 void run_ccd(benchmark::State& state, CcdFn fn, CcdKind kind, const char* category, bool core_counters) {
@@ -61,12 +79,12 @@ void run_ccd(benchmark::State& state, CcdFn fn, CcdKind kind, const char* catego
     state.counters["inclusion_share"] = static_cast<double>(inclusion) / static_cast<double>(n);
     state.counters["boxes_per_query"] =
         static_cast<double>(tecido::ccd_stats().inclusion_boxes - before.inclusion_boxes) / static_cast<double>(n);
+    if (category == nullptr) set_error_counters(state, fn, queries);
   }
 }
 
 CcdAnswer core_ccd(const CcdQuery& q) { return tecido::ccd(q); }
 
-CcdAnswer exact_ccd(const CcdQuery& q) { return tecido::reference::to_ccd_answer(tecido::reference::exact_ccd(q)); }
 CcdAnswer fcl_ccd(const CcdQuery& q) { return tecido::reference::fcl_ccd(q); }
 /// Vertex-face only (registered for that kind alone).
 CcdAnswer bullet_ccd(const CcdQuery& q) { return tecido::reference::bullet_ccd(q).value_or(CcdAnswer{}); }

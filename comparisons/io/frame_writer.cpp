@@ -7,16 +7,17 @@
 namespace tecido::io {
 
 std::string obj_frame_text(const std::vector<Vec3>& x, const std::vector<std::array<int, 3>>& triangles,
-                           const std::string& comment, const std::vector<SurfaceMesh>& obstacles) {
+                           const std::string& comment, const std::vector<SurfaceMesh>& obstacles, int digits) {
   std::string s;
   s.reserve(40 * x.size() + 24 * triangles.size() + 64);
   s += "# " + comment + "\n";
-  for (const Vec3& p : x) s += fmt::format("v {:.9g} {:.9g} {:.9g}\n", p.x(), p.y(), p.z());
+  for (const Vec3& p : x) s += fmt::format("v {:.{}g} {:.{}g} {:.{}g}\n", p.x(), digits, p.y(), digits, p.z(), digits);
   for (const auto& t : triangles) s += fmt::format("f {} {} {}\n", t[0] + 1, t[1] + 1, t[2] + 1);
   std::size_t base = x.size();
   for (std::size_t k = 0; k < obstacles.size(); ++k) {
     s += fmt::format("o obstacle_{}\n", k);
-    for (const Vec3& p : obstacles[k].vertices) s += fmt::format("v {:.9g} {:.9g} {:.9g}\n", p.x(), p.y(), p.z());
+    for (const Vec3& p : obstacles[k].vertices)
+      s += fmt::format("v {:.{}g} {:.{}g} {:.{}g}\n", p.x(), digits, p.y(), digits, p.z(), digits);
     for (const auto& t : obstacles[k].triangles)
       s += fmt::format("f {} {} {}\n", base + t[0] + 1, base + t[1] + 1, base + t[2] + 1);
     base += obstacles[k].vertices.size();

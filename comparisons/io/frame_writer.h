@@ -20,9 +20,10 @@
 
 namespace tecido::io {
 
-/// The OBJ text of one frame; `comment` becomes the first line after "# ".
+/// The OBJ text of one frame; `comment` becomes the first line after "# ". Coordinates have `digits`
+/// significant digits (17: the doubles round-trip).
 std::string obj_frame_text(const std::vector<Vec3>& x, const std::vector<std::array<int, 3>>& triangles,
-                           const std::string& comment, const std::vector<SurfaceMesh>& obstacles = {});
+                           const std::string& comment, const std::vector<SurfaceMesh>& obstacles = {}, int digits = 9);
 
 /// The legacy VTK text of one frame (v may be empty: no velocity field).
 std::string vtk_frame_text(const std::vector<Vec3>& x, const std::vector<Vec3>& v,

@@ -44,6 +44,19 @@ std::string method_markdown(const Settings& s, const io::Json& context, const st
   return md;
 }
 
+std::string process_markdown(const Settings& s, const ProcessRun& run) {
+  std::string md = fmt::format(
+      "The whole `tecido selfcollide` process on a {0} x {0} cloth folding onto itself ({1} triangles; "
+      "comparisons/suites/bench/folding_cloth.h, the frames `bench/fold_{0}_t0.obj` and `bench/fold_{0}_t1.obj` of this "
+      "run), timed as a child of this process: medians of {2} rounds, the commands in turn (order rotating), CPU time of "
+      "the child (user + system, all threads) and wall time; rows `process/selfcollide/...`. Commands:",
+      s.process_n, 2 * (s.process_n - 1) * (s.process_n - 1), s.process_rounds);
+  for (const std::string& c : run.commands) md += " `" + c + "`;";
+  md.back() = '.';
+  if (!run.error.empty()) md += " " + run.error + ".";
+  return md + "\n\n";
+}
+
 std::string figures_markdown(const Figures& f, const Settings& s) {
   std::string tt;
   for (const auto& [engine, ns] : f.tritri_ns) tt += fmt::format("{}{} {}", tt.empty() ? "" : ", ", engine, value_text(ns));
@@ -67,45 +80,24 @@ std::string figures_markdown(const Figures& f, const Settings& s) {
   return md + "\n";
 }
 
-namespace {
-struct GoalRow {
-  std::string what;
-  double value, goal;
-  std::string unit;
-};
-
-std::vector<GoalRow> goal_rows(const Figures& f, const std::vector<BenchRow>& rows, const Settings& s, const Goals& g) {
-  std::vector<GoalRow> out = {{"core tri-tri time / FCL's", f.tritri_core_vs_fcl, g.tritri_vs_fcl, ""},
-                              {"core tri-tri time / CGAL exact's", f.tritri_core_vs_exact, g.tritri_vs_exact, ""},
-                              {"self-collision 256x256 frame, core, one thread", f.selfcollision_ms, g.selfcollision_256_ms, " ms"}};
-  for (int n : s.cloth_sizes) {
-    const BenchRow* c = find_row(rows, fmt::format("BM_ClothStep/core-symplectic/{}", n));
-    const BenchRow* b = find_row(rows, fmt::format("BM_ClothStep/bullet-classic/{}", n));
-    out.push_back({fmt::format("cloth step {0}x{0}: core symplectic / Bullet classic", n),
-                   c && b ? c->ns_per_iter / b->ns_per_iter : NAN, g.cloth_vs_bullet, ""});
-    out.push_back({fmt::format("cloth step {0}x{0}: core ns per spring", n), ns_per_spring(c), g.ns_per_spring, " ns"});
-  }
-  return out;
-}
-}  // namespace
-
-std::string goals_markdown(const Figures& f, const std::vector<BenchRow>& rows, const Settings& s, const Goals& g) {
-  std::string md = "### Goals\n\n| goal | measured | target | |\n|---|---:|---:|---|\n", missed;
+std::string goals_markdown(const std::vector<GoalRow>& goals) {
+  std::string md = "### Goals\n\n| goal | measured | target | | from |\n|---|---:|---:|---|---|\n", missed;
   int met = 0, measured = 0;
-  for (const GoalRow& r : goal_rows(f, rows, s, g)) {
-    const bool ok = std::isfinite(r.value) && r.value <= r.goal;
-    md += fmt::format("| {} | {} | ≤ {:.3g}{} | {} |\n", r.what, value_text(r.value, r.unit), r.goal, r.unit,
-                      std::isfinite(r.value) ? (ok ? "met" : "not met") : "not measured");
-    measured += std::isfinite(r.value) ? 1 : 0;
-    met += ok ? 1 : 0;
-    if (std::isfinite(r.value) && !ok) missed += (missed.empty() ? "" : "; ") + r.what;
+  for (const GoalRow& r : goals) {
+    const std::string unit = r.unit.empty() ? "" : " " + r.unit;
+    md += fmt::format("| {} | {} | {} {:.3g}{} | {} | {} |\n", r.what, value_text(r.value, unit), r.at_least ? "≥" : "≤", r.target,
+                      unit, r.measured() ? (r.met() ? "met" : "not met") : "not measured", r.from);
+    measured += r.measured() ? 1 : 0;
+    met += r.met() ? 1 : 0;
+    if (r.measured() && !r.met()) missed += (missed.empty() ? "" : "; ") + r.what;
   }
   md += fmt::format("\nIn this run {} of the {} measured goals were met{}.\n\n", met, measured,
                     missed.empty() ? "" : "; not met: " + missed);
   return md;
 }
 
-std::string all_rows_markdown(const std::vector<BenchRow>& rows, const std::vector<BenchRow>& sse2_rows) {
+std::string all_rows_markdown(const std::vector<BenchRow>& rows, const std::vector<BenchRow>& sse2_rows,
+                              const std::vector<BenchRow>& process_rows) {
   std::string md = "### All benchmarks\n\n| benchmark | label | time per iteration | ns per item |\n|---|---|---:|---:|\n";
   auto add = [&md](const std::vector<BenchRow>& rs, const std::string& prefix) {
     for (const auto& r : rs)
@@ -114,6 +106,7 @@ std::string all_rows_markdown(const std::vector<BenchRow>& rows, const std::vect
   };
   add(rows, "");
   add(sse2_rows, "`TECIDO_SIMD=sse2` ");
+  add(process_rows, "");
   return md;
 }
 
@@ -149,8 +142,8 @@ namespace {
 io::Json rows_json(const std::vector<BenchRow>& rows) {
   io::Json a = io::Json::array();
   for (const auto& r : rows)
-    a.push_back({{"name", r.name}, {"label", r.label}, {"ns_per_iteration", r.ns_per_iter}, {"ns_per_item", r.ns_per_item},
-                 {"counters", r.counters}});
+    a.push_back({{"name", r.name}, {"label", r.label}, {"ns_per_iteration", r.ns_per_iter},
+                 {"wall_ns_per_iteration", r.real_ns_per_iter}, {"ns_per_item", r.ns_per_item}, {"counters", r.counters}});
   return a;
 }
 
@@ -158,7 +151,8 @@ io::Json num_or_null(double v) { return std::isfinite(v) ? io::Json(v) : io::Jso
 io::Json span_json(const Span& s) { return {num_or_null(s.lo), num_or_null(s.hi)}; }
 }  // namespace
 
-io::Json bench_json(const Figures& f, const std::vector<BenchRow>& rows, const std::vector<BenchRow>& sse2_rows) {
+io::Json bench_json(const Figures& f, const std::vector<BenchRow>& rows, const std::vector<BenchRow>& sse2_rows,
+                    const std::vector<BenchRow>& process_rows, const std::vector<GoalRow>& goals) {
   io::Json tt = io::Json::object();
   for (const auto& [engine, ns] : f.tritri_ns) tt[engine] = num_or_null(ns);
   const io::Json figures = {{"ns_per_tritri_pair", tt},
@@ -171,7 +165,8 @@ io::Json bench_json(const Figures& f, const std::vector<BenchRow>& rows, const s
                             {"ns_per_spring", {{"kernel", f.kernel}, {"range", span_json(f.ns_per_spring)}}},
                             {"ns_per_spring_sse2", {{"kernel", f.sse2_kernel}, {"range", span_json(f.sse2_ns_per_spring)}}},
                             {"ns_per_bullet_link", span_json(f.bullet_ns_per_link)}};
-  return {{"benchmarks", rows_json(rows)}, {"sse2_benchmarks", rows_json(sse2_rows)}, {"figures", figures}};
+  return {{"benchmarks", rows_json(rows)}, {"sse2_benchmarks", rows_json(sse2_rows)}, {"process_timings", rows_json(process_rows)},
+          {"figures", figures}, {"goals", goals_json(goals)}};
 }
 
 }  // namespace tecido::suites::bench

@@ -8,12 +8,18 @@
 
 namespace tecido::suites::bench {
 
-std::string bench_binary() {
+std::string own_binary() {
   char buf[4096];
   const ssize_t n = ::readlink("/proc/self/exe", buf, sizeof buf - 1);
   if (n <= 0) return "";
   buf[n] = 0;
-  const std::filesystem::path bin = std::filesystem::path(buf).parent_path() / "tecido-bench";
+  return buf;
+}
+
+std::string bench_binary() {
+  const std::string self = own_binary();
+  if (self.empty()) return "";
+  const std::filesystem::path bin = std::filesystem::path(self).parent_path() / "tecido-bench";
   return std::filesystem::exists(bin) ? bin.string() : "";
 }
 

@@ -6,6 +6,9 @@
 
 namespace tecido::suites::bench {
 
+/// The running executable's path (/proc/self/exe; "" when unknown): `tecido` when the suite runs.
+std::string own_binary();
+
 /// build/bin/tecido-bench: the file next to the running executable ("" when there is none).
 std::string bench_binary();
 

@@ -20,6 +20,26 @@ bool is_own_key(const std::string& key) {
 }
 }  // namespace
 
+std::string benchmark_base_name(const std::string& name) {
+  static const char* const attributes[] = {"real_time", "process_time", "manual_time", "iterations:", "min_time:", "repeats:"};
+  std::string base = name;
+  for (bool cut = true; cut;) {
+    cut = false;
+    const std::size_t slash = base.rfind('/');
+    if (slash == std::string::npos) break;
+    const std::string last = base.substr(slash + 1);
+    for (const char* a : attributes) {
+      const std::string attr = a;
+      if (attr.back() == ':' ? last.compare(0, attr.size(), attr) == 0 : last == attr) {
+        base.resize(slash);
+        cut = true;
+        break;
+      }
+    }
+  }
+  return base;
+}
+
 std::vector<BenchRow> parse_benchmark_json(const io::Json& doc) {
   std::vector<BenchRow> rows;
   if (!doc.is_object() || !doc.contains("benchmarks")) return rows;
@@ -31,6 +51,7 @@ std::vector<BenchRow> parse_benchmark_json(const io::Json& doc) {
     // CPU time: on a machine shared with other work, wall time also counts the time others take
     // (every benchmark here is one thread without I/O, so on an idle machine the two agree).
     r.ns_per_iter = b.value("cpu_time", 0.0) * ns_scale(b.value("time_unit", "ns"));
+    r.real_ns_per_iter = b.value("real_time", 0.0) * ns_scale(b.value("time_unit", "ns"));
     if (b.contains("items_per_second") && b["items_per_second"].get<double>() > 0)
       r.ns_per_item = 1e9 / b["items_per_second"].get<double>();
     for (auto it = b.begin(); it != b.end(); ++it)
@@ -42,7 +63,7 @@ std::vector<BenchRow> parse_benchmark_json(const io::Json& doc) {
 
 const BenchRow* find_row(const std::vector<BenchRow>& rows, const std::string& name) {
   for (const auto& r : rows)
-    if (r.name == name) return &r;
+    if (r.name == name || benchmark_base_name(r.name) == name) return &r;
   return nullptr;
 }
 

@@ -40,5 +40,19 @@ TEST(BenchmarkJson, IterationRowsInNanosecondsOfCpuTime) {
   EXPECT_TRUE(parse_benchmark_json(io::Json::parse("{}")).empty());
 }
 
+TEST(BenchmarkJson, RowsFoundByNameLessTheirMeasurementAttributes) {
+  EXPECT_EQ(benchmark_base_name("BM_SelfCollisionLongRun/experiment/discrete/iterations:1"), "BM_SelfCollisionLongRun/experiment/discrete");
+  EXPECT_EQ(benchmark_base_name("BM_ContinuousSelfCollision/threads:2/256/real_time"), "BM_ContinuousSelfCollision/threads:2/256");
+  EXPECT_EQ(benchmark_base_name("BM_X/8/min_time:0.500/repeats:3/real_time"), "BM_X/8");
+  EXPECT_EQ(benchmark_base_name("BM_ContinuousSelfCollision/threads:2/256"), "BM_ContinuousSelfCollision/threads:2/256")
+      << "a benchmark's own arguments stay";
+  BenchRow r;
+  r.name = "BM_ContinuousSelfCollision/threads:2/256/real_time";
+  const std::vector<BenchRow> rows = {r};
+  EXPECT_EQ(find_row(rows, "BM_ContinuousSelfCollision/threads:2/256"), &rows[0]);
+  EXPECT_EQ(find_row(rows, "BM_ContinuousSelfCollision/threads:2/256/real_time"), &rows[0]);
+  EXPECT_EQ(find_row(rows, "BM_ContinuousSelfCollision/threads:2"), nullptr);
+}
+
 }  // namespace
 }  // namespace tecido::suites::bench
