@@ -4,6 +4,7 @@
 #include "core/platform/parallel_parts.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace tecido {
 
@@ -16,6 +17,38 @@ bool share_vertex(const std::array<int, 3>& a, const std::array<int, 3>& b) {
       if (u == v) return true;
   return false;
 }
+/// Whether the corners of t with coordinate a equal to level_t have boxes, over the two other
+/// axes, apart from those of u's corners with coordinate a equal to level_u (a strict gap on one
+/// axis).
+bool faces_on_plane_apart(const Triangle& t, double level_t, const Triangle& u, double level_u, int a) {
+  for (int b = 0; b < 3; ++b) {
+    if (b == a) continue;
+    double tlo = HUGE_VAL, thi = -HUGE_VAL, ulo = HUGE_VAL, uhi = -HUGE_VAL;
+    for (int i = 0; i < 3; ++i) {
+      if (t[i][a] == level_t) tlo = std::min(tlo, t[i][b]), thi = std::max(thi, t[i][b]);
+      if (u[i][a] == level_u) ulo = std::min(ulo, u[i][b]), uhi = std::max(uhi, u[i][b]);
+    }
+    if (thi < ulo || uhi < tlo) return true;
+  }
+  return false;
+}
+
+/// True when the closed triangles p and q certainly do not intersect because their boxes meet
+/// only on a plane x_a = X0 (X0 the largest coordinate a of one triangle and the smallest of the
+/// other): every common point would lie there, where each triangle is the hull of its corners
+/// with coordinate X0, and those hulls' boxes are apart. Comparisons of coordinates only, so
+/// exact; false decides nothing (the exact test follows). The common case of a flat, grid-aligned
+/// cloth: neighbouring cells' triangles whose boxes share a side or a corner.
+bool apart_where_boxes_touch(const Triangle& p, const Triangle& q) {
+  const Vec3 pmin = p[0].cwiseMin(p[1]).cwiseMin(p[2]), pmax = p[0].cwiseMax(p[1]).cwiseMax(p[2]);
+  const Vec3 qmin = q[0].cwiseMin(q[1]).cwiseMin(q[2]), qmax = q[0].cwiseMax(q[1]).cwiseMax(q[2]);
+  for (int a = 0; a < 3; ++a) {
+    if (pmax[a] == qmin[a] && faces_on_plane_apart(p, pmax[a], q, qmin[a], a)) return true;
+    if (qmax[a] == pmin[a] && faces_on_plane_apart(q, qmax[a], p, pmin[a], a)) return true;
+  }
+  return false;
+}
+
 }  // namespace
 
 TriTriTest default_tri_tri_test() { return &tri_tri_intersect; }
@@ -121,13 +154,19 @@ void SelfCollisionDetector::narrow_phase(const std::vector<Vec3>& x, std::size_t
       }
       for (; keep; keep &= keep - 1) {
         const TrianglePair& c = candidates_[k + static_cast<std::size_t>(__builtin_ctz(keep))];
-        if (tri_tri_intersect(corners(x, tris_[c[0]]), corners(x, tris_[c[1]]))) out.push_back(c);
+        const Triangle p = corners(x, tris_[c[0]]), q = corners(x, tris_[c[1]]);
+        if (!apart_where_boxes_touch(p, q) && tri_tri_intersect(p, q)) out.push_back(c);
       }
     }
   }
+  // The exact test's answer is "apart" wherever apart_where_boxes_touch says so; another test
+  // (the seed's) is asked every candidate, as self_collision_pairs_brute asks it.
+  const bool exact = test_ == default_tri_tri_test();
   for (; k < nc; ++k) {
     const TrianglePair& c = candidates_[k];
-    if (test_(corners(x, tris_[c[0]]), corners(x, tris_[c[1]]))) out.push_back(c);
+    const Triangle p = corners(x, tris_[c[0]]), q = corners(x, tris_[c[1]]);
+    if (exact && apart_where_boxes_touch(p, q)) continue;
+    if (test_(p, q)) out.push_back(c);
   }
 }
 

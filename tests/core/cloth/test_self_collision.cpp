@@ -9,6 +9,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <random>
 
 namespace tecido {
@@ -157,6 +158,43 @@ TEST(SelfCollision, TouchingAndCoplanarPairsAreKept) {
     EXPECT_TRUE(std::binary_search(brute.begin(), brute.end(), TrianglePair{t, t + nt})) << t;
   // The flat grid alone has no self-intersection (neighbours share vertices; the rest is apart).
   EXPECT_TRUE(self_collision_pairs(s.particles.x, s.triangles).empty());
+}
+
+// Boxes that meet only on a plane (the grid-aligned cloth's neighbours): the narrow phase skips
+// the exact test where the two triangles' faces on that plane have boxes apart, and must keep
+// every pair that touches there. Worked cases in z = 0 and on a plane x = 1 of a standing pair;
+// p = (0,0)-(1,0)-(0,1) has its largest x, 1, at the corner (1, 0) alone.
+TEST(SelfCollision, PairsWhoseBoxesOnlyTouchAreDecidedExactly) {
+  const std::vector<Vec3> x = {
+      {0, 0, 0}, {1, 0, 0}, {0, 1, 0},          // 0-2  p
+      {1, 0, 0}, {2, 0, 0}, {2, 1, 0},          // 3-5  a copy of p's corner (1,0): touches p there
+      {1, -0.5, 0}, {1, 0.5, 0}, {2, 0, 0},     // 6-8  an edge on x = 1 through (1,0): a T-junction
+      {1, 0.5, 0}, {1, 1.5, 0}, {2, 1, 0},      // 9-11 an edge on x = 1 from y 0.5: boxes touch, apart
+      {1, std::nextafter(0.0, 1.0), 0}, {2, 0.5, 0}, {2, -0.5, 0},  // 12-14 a corner one ulp above (1,0)
+      {1, 0, 1}, {1, 0, 2}, {1, 1, 1},          // 15-17 standing on x = 1 above p's corner: apart in z
+      {1, 0, 0.0}, {1, -1, 1}, {1, 1, 1},       // 18-20 standing on x = 1 with a corner on (1,0,0)
+  };
+  const std::vector<std::array<int, 3>> tris = {{0, 1, 2}, {3, 4, 5}, {6, 7, 8}, {9, 10, 11}, {12, 13, 14},
+                                                {15, 16, 17}, {18, 19, 20}};
+  const auto brute = self_collision_pairs_brute(x, tris);
+  SelfCollisionDetector det(tris, x);
+  EXPECT_EQ(det.detect(x), brute);
+  for (const TrianglePair& want : {TrianglePair{0, 1}, TrianglePair{0, 2}, TrianglePair{0, 6}})
+    EXPECT_TRUE(std::binary_search(brute.begin(), brute.end(), want)) << want[0] << " " << want[1];
+  for (const TrianglePair& apart : {TrianglePair{0, 3}, TrianglePair{0, 4}, TrianglePair{0, 5}})
+    EXPECT_FALSE(std::binary_search(brute.begin(), brute.end(), apart)) << apart[0] << " " << apart[1];
+  // A flat, grid-aligned cloth on dyadic coordinates (every neighbour box meets another on a
+  // side or a corner): no pair, as brute force says.
+  Scene s;
+  ClothGridSpec spec;
+  spec.rows = spec.cols = 17;
+  spec.spacing = 0.125;
+  spec.total_mass = 1;
+  append_cloth(s, spec);
+  SelfCollisionDetector flat(s.triangles, s.particles.x);
+  EXPECT_EQ(flat.detect(s.particles.x), self_collision_pairs_brute(s.particles.x, s.triangles));
+  EXPECT_TRUE(flat.detect(s.particles.x).empty());
+  EXPECT_GT(flat.last_candidates(), 1000u);
 }
 
 // Tree shapes and coordinate ranges at the edges: meshes of 0 to 40 triangles (a lone leaf,
