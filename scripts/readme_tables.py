@@ -80,16 +80,20 @@ def seed_value(claim):
     return value(claim, claim["seed"])
 
 
+def read_json(path):
+    try:
+        with open(path, encoding="utf-8") as f:
+            return json.load(f)
+    except OSError as e:
+        raise InputProblem(f"{path}: cannot read: {e.strerror}")
+    except json.JSONDecodeError as e:
+        raise InputProblem(f"{path}: line {e.lineno}: not JSON: {e.msg}")
+
+
 class Result:
     def __init__(self, path):
         self.path = path
-        try:
-            with open(path, encoding="utf-8") as f:
-                self.doc = json.load(f)
-        except OSError as e:
-            raise InputProblem(f"{path}: cannot read: {e.strerror}")
-        except json.JSONDecodeError as e:
-            raise InputProblem(f"{path}: line {e.lineno}: not JSON: {e.msg}")
+        self.doc = read_json(path)
         if not isinstance(self.doc, dict) or self.doc.get("experiment") != "self-contact" or "claims" not in self.doc:
             raise InputProblem(f"{path}: /experiment: not a self-contact experiment result")
         self.detectors = self.doc["detectors"]
@@ -197,13 +201,7 @@ def block(res, rel_path):
 
 
 def forced_result(path):
-    try:
-        with open(path, encoding="utf-8") as f:
-            doc = json.load(f)
-    except OSError as e:
-        raise InputProblem(f"{path}: cannot read: {e.strerror}")
-    except json.JSONDecodeError as e:
-        raise InputProblem(f"{path}: line {e.lineno}: not JSON: {e.msg}")
+    doc = read_json(path)
     if not isinstance(doc, dict) or doc.get("experiment") != "forced-contact" or "claims" not in doc:
         raise InputProblem(f"{path}: /experiment: not a forced-contact experiment result")
     return doc
@@ -227,16 +225,6 @@ def forced_block(doc, rel_path):
                      f"{forced_value(c, hi)}] | {c['verdict']}{' (' + c['reason'] + ')' if c.get('reason') else ''} |")
     lines.append(FORCED_END)
     return lines
-
-
-def read_json(path):
-    try:
-        with open(path, encoding="utf-8") as f:
-            return json.load(f)
-    except OSError as e:
-        raise InputProblem(f"{path}: cannot read: {e.strerror}")
-    except json.JSONDecodeError as e:
-        raise InputProblem(f"{path}: line {e.lineno}: not JSON: {e.msg}")
 
 
 def bench_goals(path):
