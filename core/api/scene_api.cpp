@@ -42,12 +42,23 @@ void require_positive(const char* function, const char* name, double x) {
 constexpr double kHuge = 1e300;
 
 /// The motion and contact keys an obstacle shares, checked.
-void check_motion(const char* function, const Vec3& velocity, const Vec3& angular_velocity, double friction,
-                  const std::optional<double>& elasticity) {
-  require_finite(function, "velocity", velocity);
-  require_finite(function, "angular_velocity", angular_velocity);
-  require_in(function, "friction", friction, 0.0, 1.0);
-  if (elasticity) require_in(function, "elasticity", *elasticity, 0.0, 1.0);
+/// An obstacle of `kind` at the shape's centre with its motion and contact fields (Sphere and Box
+/// share them), after checking those fields; the caller fills the shape's own.
+template <class Shape>
+Obstacle moving_obstacle(const char* function, ObstacleKind kind, const Shape& s) {
+  require_finite(function, "center", s.center);
+  require_finite(function, "velocity", s.velocity);
+  require_finite(function, "angular_velocity", s.angular_velocity);
+  require_in(function, "friction", s.friction, 0.0, 1.0);
+  if (s.elasticity) require_in(function, "elasticity", *s.elasticity, 0.0, 1.0);
+  Obstacle o;
+  o.kind = kind;
+  o.center = s.center;
+  o.velocity = s.velocity;
+  o.angular_velocity = s.angular_velocity;
+  o.friction = s.friction;
+  o.elasticity = s.elasticity;
+  return o;
 }
 
 ::tecido::IntegratorKind internal(Integrator k) {
@@ -216,38 +227,22 @@ int Scene::add_plane(const Rectangle& r, double friction) {
 }
 
 int Scene::add_sphere(const Sphere& s) {
-  require_finite("add_sphere", "center", s.center);
+  Obstacle o = moving_obstacle("add_sphere", ObstacleKind::Sphere, s);
   require_positive("add_sphere", "radius", s.radius);
-  check_motion("add_sphere", s.velocity, s.angular_velocity, s.friction, s.elasticity);
-  Obstacle o;
-  o.kind = ObstacleKind::Sphere;
-  o.center = s.center;
   o.radius = s.radius;
-  o.velocity = s.velocity;
-  o.angular_velocity = s.angular_velocity;
-  o.friction = s.friction;
-  o.elasticity = s.elasticity;
   d_->scene.obstacles.push_back(std::move(o));
   return static_cast<int>(d_->scene.obstacles.size() - 1);
 }
 
 int Scene::add_box(const Box& b) {
   const char* f = "add_box";
-  require_finite(f, "center", b.center);
+  Obstacle o = moving_obstacle(f, ObstacleKind::Box, b);
   for (int k = 0; k < 3; ++k) require_positive(f, "half_extents", b.half_extents[k]);
   if (!b.orientation.allFinite() || !(b.orientation.transpose() * b.orientation).isIdentity(1e-9) ||
       !(b.orientation.determinant() > 0.0))
     refuse(f, "orientation must be a rotation (orthonormal columns, determinant 1)");
-  check_motion(f, b.velocity, b.angular_velocity, b.friction, b.elasticity);
-  Obstacle o;
-  o.kind = ObstacleKind::Box;
-  o.center = b.center;
   o.half_extents = b.half_extents;
   o.orientation = b.orientation;
-  o.velocity = b.velocity;
-  o.angular_velocity = b.angular_velocity;
-  o.friction = b.friction;
-  o.elasticity = b.elasticity;
   d_->scene.obstacles.push_back(std::move(o));
   return static_cast<int>(d_->scene.obstacles.size() - 1);
 }

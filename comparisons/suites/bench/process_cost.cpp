@@ -1,5 +1,6 @@
 #include "comparisons/suites/bench/process_cost.h"
 
+#include "comparisons/io/provenance.h"
 #include "comparisons/io/text_file.h"
 #include "comparisons/suites/bench/folding_cloth.h"
 
@@ -15,7 +16,9 @@ namespace tecido::suites::bench {
 
 namespace {
 struct ProcessCommand {
-  std::string name, args, out;  ///< row name, arguments after the binary, stdout file
+  std::string name;
+  std::vector<std::string> args;  ///< after the binary
+  std::string out;                ///< its stdout file
   std::vector<double> cpu_ns, wall_ns;
 };
 
@@ -28,7 +31,9 @@ double children_cpu_ns() {
 
 /// Runs one command; false when it fails.
 bool run_timed(const std::string& tecido, const std::string& dir, ProcessCommand& c) {
-  const std::string cmd = fmt::format("'{}' {} >'{}' 2>'{}/selfcollide.stderr'", tecido, c.args, c.out, dir);
+  std::vector<std::string> argv{tecido};
+  argv.insert(argv.end(), c.args.begin(), c.args.end());
+  const std::string cmd = io::shell_line(argv) + " >" + io::shell_line({c.out}) + " 2>" + io::shell_line({dir + "/selfcollide.stderr"});
   const double cpu0 = children_cpu_ns();
   const auto t0 = std::chrono::steady_clock::now();
   const int rc = std::system(cmd.c_str());
@@ -45,11 +50,11 @@ double median(std::vector<double> v) {
 
 std::vector<ProcessCommand> commands_of(const FoldingFiles& f, const std::string& dir, int n, const std::vector<int>& threads) {
   std::vector<ProcessCommand> cs;
-  cs.push_back({fmt::format("process/selfcollide/discrete/{}", n), fmt::format("selfcollide --mesh '{}' --json", f.end),
+  cs.push_back({fmt::format("process/selfcollide/discrete/{}", n), {"selfcollide", "--mesh", f.end, "--json"},
                 dir + "/discrete.out", {}, {}});
   for (int t : threads)
     cs.push_back({fmt::format("process/selfcollide/continuous/threads:{}/{}", t, n),
-                  fmt::format("selfcollide --mesh '{}' --to '{}' --threads {} --json", f.start, f.end, t),
+                  {"selfcollide", "--mesh", f.start, "--to", f.end, "--threads", std::to_string(t), "--json"},
                   fmt::format("{}/continuous-{}.out", dir, t), {}, {}});
   return cs;
 }
@@ -60,12 +65,12 @@ ProcessRun time_selfcollide(const std::string& tecido, const std::string& dir, i
   const FoldingStep step = folding_cloth_step(n);
   const FoldingFiles files = write_folding_step(step, n, dir);
   std::vector<ProcessCommand> cs = commands_of(files, dir, n, threads);
-  for (const auto& c : cs) run.commands.push_back("build/bin/tecido " + c.args);
+  for (const auto& c : cs) run.commands.push_back("build/bin/tecido " + io::shell_line(c.args));
   for (int r = 0; r < rounds; ++r)
     for (std::size_t k = 0; k < cs.size(); ++k) {
       ProcessCommand& c = cs[(k + static_cast<std::size_t>(r)) % cs.size()];
       if (!run_timed(tecido, dir, c)) {
-        run.error = fmt::format("`{} {}` failed; see `bench/selfcollide.stderr`", tecido, c.args);
+        run.error = fmt::format("`{} {}` failed; see `bench/selfcollide.stderr`", tecido, io::shell_line(c.args));
         return run;
       }
     }

@@ -193,6 +193,22 @@ TEST(SimulationFacade, BadArgumentsAreRefusedWithTheFunctionAndTheProblem) {
   EXPECT_EQ(refusal([&] { s.add_plane(r); }), "tecido::core::Scene::add_plane: forward is parallel to the normal");
   EXPECT_EQ(s.particle_count(), 0u);  // nothing half added
   EXPECT_EQ(refusal([&] { tc::Simulation sim(s); }), "tecido::core::Simulation: the scene has no particles");
+  tc::Sphere bad_ball;
+  bad_ball.radius = -1.0;
+  EXPECT_EQ(refusal([&] { s.add_sphere(bad_ball); }), "tecido::core::Scene::add_sphere: radius must be > 0 and finite, got -1");
+  bad_ball.radius = 1.0;
+  bad_ball.friction = 2.0;
+  EXPECT_EQ(refusal([&] { s.add_sphere(bad_ball); }), "tecido::core::Scene::add_sphere: friction must be in [0, 1], got 2");
+  tc::Box bad_box;
+  bad_box.velocity = Vec3(INFINITY, 0, 0);
+  EXPECT_EQ(refusal([&] { s.add_box(bad_box); }), "tecido::core::Scene::add_box: velocity must be finite");
+  bad_box.velocity = Vec3::Zero();
+  bad_box.orientation(0, 0) = -1.0;
+  EXPECT_EQ(refusal([&] { s.add_box(bad_box); }),
+            "tecido::core::Scene::add_box: orientation must be a rotation (orthonormal columns, determinant 1)");
+  bad_box.orientation(0, 0) = 1.0;
+  bad_box.elasticity = -0.5;
+  EXPECT_EQ(refusal([&] { s.add_box(bad_box); }), "tecido::core::Scene::add_box: elasticity must be in [0, 1], got -0.5");
   tc::Sphere ball;
   ball.radius = 1.0;
   s.add_sphere(ball);

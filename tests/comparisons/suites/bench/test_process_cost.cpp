@@ -36,8 +36,8 @@ TEST(BenchProcessCost, OneRowPerCommandAndTheAnswersCompared) {
   EXPECT_EQ(run.rows[0].counters["triangles"], 18) << "2 (4 - 1)^2";
   EXPECT_FALSE(run.rows[0].counters.contains("same_answer"));
   for (const BenchRow& r : run.rows) EXPECT_GT(r.real_ns_per_iter, 0) << r.name;
-  EXPECT_EQ(run.commands[2], "build/bin/tecido selfcollide --mesh '" + (dir / "out" / "fold_4_t0.obj").string() + "' --to '" +
-                                 (dir / "out" / "fold_4_t1.obj").string() + "' --threads 2 --json");
+  EXPECT_EQ(run.commands[2], "build/bin/tecido selfcollide --mesh " + (dir / "out" / "fold_4_t0.obj").string() + " --to " +
+                                 (dir / "out" / "fold_4_t1.obj").string() + " --threads 2 --json");
   const FoldingStep step = folding_cloth_step(4);
   const io::ObjMesh m0 = io::load_obj_mesh((dir / "out" / "fold_4_t0.obj").string());
   EXPECT_EQ(m0.vertices, step.x0) << "17 digits: the doubles round-trip";
@@ -55,6 +55,23 @@ TEST(BenchProcessCost, OneRowPerCommandAndTheAnswersCompared) {
   EXPECT_NE(bad.error.find("failed; see `bench/selfcollide.stderr`"), std::string::npos) << bad.error;
   EXPECT_TRUE(bad.rows.empty());
   std::filesystem::remove_all(dir);
+}
+
+TEST(BenchProcessCost, PathsWithQuotesAndSpacesReachTheCommandIntact) {
+  const auto dir = testing::temp_dir("bench-process-quoted") / "it's a $dir";
+  std::filesystem::create_directories(dir);
+  const auto bin = dir / "fake tecido";
+  testing::write_text(bin, fake(true));
+  std::filesystem::permissions(bin, std::filesystem::perms::owner_all);
+  const ProcessRun run = time_selfcollide(bin.string(), (dir / "out").string(), 3, 1, {1, 2});
+  ASSERT_TRUE(run.error.empty()) << run.error;
+  ASSERT_EQ(run.rows.size(), 3u);
+  EXPECT_EQ(run.rows[2].counters["same_answer"], 0) << "the fake saw --threads 2: the arguments arrived as words";
+  EXPECT_TRUE(std::filesystem::exists(dir / "out" / "fold_3_t1.obj"));
+  const std::string quoted_out = "'" + dir.parent_path().string() + "/it'\\''s a $dir/out/";
+  EXPECT_EQ(run.commands[1], "build/bin/tecido selfcollide --mesh " + quoted_out + "fold_3_t0.obj' --to " + quoted_out +
+                                 "fold_3_t1.obj' --threads 1 --json");
+  std::filesystem::remove_all(dir.parent_path());
 }
 
 }  // namespace
