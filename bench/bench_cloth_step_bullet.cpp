@@ -36,12 +36,8 @@ using namespace tecido;
 Scene bench_cloth(int n) {
   Scene s;
   s.forces.gravity = Vec3(0, 0, -9.81);
-  ClothGridSpec c;
-  c.rows = n;
-  c.cols = n;
-  c.spacing = 1.0 / (n - 1);
+  ClothGridSpec c = unit_square_cloth(n);
   c.origin = Vec3(0, 0, 1);
-  c.total_mass = 1.0;
   c.stiffness_b = 100.0;
   c.stiffness_a = 25.0;
   c.pins = {{0, 0}, {0, n - 1}};

@@ -22,12 +22,7 @@ struct Frame {
 // 0.02 m above it, with a ripple of amplitude 0.03 m: the layers cross along curves.
 Frame folded_cloth(int n) {
   Scene s;
-  ClothGridSpec spec;
-  spec.rows = spec.cols = n;
-  spec.spacing = 1.0 / (n - 1);
-  spec.total_mass = 1.0;
-  spec.stiffness_b = 1.0;
-  append_cloth(s, spec);
+  append_cloth(s, unit_square_cloth(n));
   Frame f;
   f.rest = s.particles.x;
   f.tris = s.triangles;

@@ -22,6 +22,17 @@ namespace tecido {
 /// spacing > 0, total_mass > 0, axes unit and orthogonal, pins inside the grid.
 void append_cloth(Scene& scene, const ClothGridSpec& spec);
 
+/// The unit square cloth of the benchmarks and kernel tests: n x n nodes (n >= 2) spanning
+/// 1 m along axis_u and axis_v from the origin, total mass 1 kg, stiffness_b 1, nothing pinned.
+inline ClothGridSpec unit_square_cloth(int n) {
+  ClothGridSpec spec;
+  spec.rows = spec.cols = n;
+  spec.spacing = 1.0 / (n - 1);
+  spec.total_mass = 1.0;
+  spec.stiffness_b = 1.0;
+  return spec;
+}
+
 /// Particle index of grid node (r, c) for a cloth whose first particle is `first`.
 inline int cloth_node(const ClothGridSpec& spec, int first, int r, int c) { return first + r * spec.cols + c; }
 

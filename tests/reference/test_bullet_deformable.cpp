@@ -27,12 +27,8 @@ Scene cloth_scene(int n, double ks_b, double ks_a, double dt, std::vector<std::a
   s.integrator = IntegratorKind::Symplectic;
   s.dt = dt;
   s.forces.gravity = kGravity;
-  ClothGridSpec c;
-  c.rows = n;
-  c.cols = n;
-  c.spacing = 1.0 / (n - 1);
+  ClothGridSpec c = unit_square_cloth(n);
   c.origin = Vec3(0, 0, 1);
-  c.total_mass = 1.0;
   c.stiffness_b = ks_b;
   c.stiffness_a = ks_a;
   c.pins = std::move(pins);

@@ -31,12 +31,7 @@ std::vector<Vec3> folded(const std::vector<Vec3>& rest, double h, double drop) {
 
 FoldingStep folding_cloth_step(int n, bool gentle) {
   Scene s;
-  ClothGridSpec spec;
-  spec.rows = spec.cols = n;
-  spec.spacing = 1.0 / (n - 1);
-  spec.total_mass = 1.0;
-  spec.stiffness_b = 1.0;
-  append_cloth(s, spec);
+  append_cloth(s, unit_square_cloth(n));
   FoldingStep st;
   st.rest = s.particles.x;
   st.triangles = s.triangles;

@@ -7,14 +7,10 @@ namespace tecido::suites::tradeoff {
 
 Scene hanging_cloth(int n) {
   Scene s;
-  ClothGridSpec g;
-  g.rows = g.cols = n;
-  g.spacing = 1.0 / (n - 1);
-  g.origin = Vec3::Zero();
+  ClothGridSpec g = unit_square_cloth(n);
   g.axis_u = Vec3::UnitX();
   g.axis_v = -Vec3::UnitZ();  // rows go down: row 0 is the top edge
   g.total_mass = 0.1;
-  g.stiffness_b = 1.0;
   g.stiffness_a = 0.5;
   g.pins = {{0, 0}, {0, n - 1}};
   append_cloth(s, g);

@@ -29,12 +29,7 @@ std::vector<Vec3> rippled_fold(const std::vector<Vec3>& rest) {
 TEST(SelfCollisionKernels, WideBvhMasksGiveTheSamePairList) {
   for (int n : {2, 3, 9, 40}) {
     Scene s;
-    ClothGridSpec spec;
-    spec.rows = spec.cols = n;
-    spec.spacing = 1.0 / (n - 1);
-    spec.total_mass = 1.0;
-    spec.stiffness_b = 1.0;
-    append_cloth(s, spec);
+    append_cloth(s, unit_square_cloth(n));
     const std::vector<Vec3> rest = s.particles.x;
     for (const auto& x : {rest, rippled_fold(rest)}) {
       TriangleBvh wide, narrow;
