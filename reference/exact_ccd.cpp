@@ -13,6 +13,7 @@
 // a single root on the union). No step rounds.
 #include "reference/exact_ccd.h"
 
+#include "reference/exact_ccd_feature_contact.h"
 #include "reference/exact_ccd_filter.h"
 
 #include <gmpxx.h>
@@ -682,6 +683,13 @@ ExactCcd exact_ccd(const CcdQuery& q) {
 
 bool exact_ccd_hit(const CcdQuery& q) {
   check_finite(q);
+  // The filter with a short narrowing budget (it decides generic queries at once), then contacts
+  // at a vertex (which it can never prove, exactly at a zero of its conditions), then the filter
+  // in full, then exact arithmetic: cheapest proofs first, each certified.
+  constexpr int kQuickNarrowings = 4;
+  const CcdFilterVerdict quick = certified_float_ccd(q, kQuickNarrowings);
+  if (quick.kind != CcdFilterVerdict::Kind::Unproven) return quick.kind == CcdFilterVerdict::Kind::Hit;
+  if (proven_feature_contact(q)) return true;
   const CcdFilterVerdict v = certified_float_ccd(q);
   if (v.kind != CcdFilterVerdict::Kind::Unproven) return v.kind == CcdFilterVerdict::Kind::Hit;
   return solve_hit(integer_query(q));
