@@ -182,10 +182,10 @@ double approximate_root(const std::array<Fe, 4>& b, const RootInterval& ri) {
 }
 
 /// Narrows `ri` in one step to a few ulps around its root, when the cubic's signs prove the
-/// root is there (tried at distances 2^-40, 2^-28 and 2^-16 of an approximation); false if not.
+/// root is there (tried at distances 2^-50 to 2^-16 of an approximation); false if not.
 bool jump_to_root(const std::array<Fe, 4>& b, RootInterval& ri) {
   const double t = approximate_root(b, ri);
-  for (double delta : {0x1p-48, 0x1p-40, 0x1p-28, 0x1p-16}) {
+  for (double delta : {0x1p-50, 0x1p-47, 0x1p-44, 0x1p-40, 0x1p-32, 0x1p-24, 0x1p-16}) {
     const double l = t - delta, r = t + delta;
     if (!(ri.l < l && r < ri.r)) continue;
     if (sign(cubic_at(b, l)) == ri.sign_l && sign(cubic_at(b, r)) == -ri.sign_l) {
