@@ -683,12 +683,9 @@ ExactCcd exact_ccd(const CcdQuery& q) {
 
 bool exact_ccd_hit(const CcdQuery& q) {
   check_finite(q);
-  // The filter with a short narrowing budget (it decides generic queries at once), then contacts
-  // at a vertex (which it can never prove, exactly at a zero of its conditions), then the filter
-  // in full, then exact arithmetic: cheapest proofs first, each certified.
-  constexpr int kQuickNarrowings = 4;
-  const CcdFilterVerdict quick = certified_float_ccd(q, kQuickNarrowings);
-  if (quick.kind != CcdFilterVerdict::Kind::Unproven) return quick.kind == CcdFilterVerdict::Kind::Hit;
+  // Cheapest certified proofs first: a contact at a vertex (the kind the filter can never prove,
+  // exactly at a zero of its conditions; declined at once on generic input), then the filter,
+  // then exact arithmetic.
   if (proven_feature_contact(q)) return true;
   const CcdFilterVerdict v = certified_float_ccd(q);
   if (v.kind != CcdFilterVerdict::Kind::Unproven) return v.kind == CcdFilterVerdict::Kind::Hit;

@@ -62,6 +62,11 @@ const Vec3& end_point(const CcdQuery& q, int i, int end) {
 /// (d_k(0) d_l(1) = d_l(0) d_k(1)), and it lies in [0, 1] when d(0) and d(1) are not of one
 /// strict sign.
 bool vertices_meet(const CcdQuery& q, int i, int j) {
+  for (int k = 0; k < 3; ++k) {  // a difference of one strict sign at both ends never vanishes
+    const double a0 = end_point(q, i, 0)[k], b0 = end_point(q, j, 0)[k];
+    const double a1 = end_point(q, i, 1)[k], b1 = end_point(q, j, 1)[k];
+    if ((a0 < b0 && a1 < b1) || (a0 > b0 && a1 > b1)) return false;
+  }
   std::array<std::array<DiffExpansion, 2>, 3> d;
   int first = -1;
   for (int k = 0; k < 3; ++k) {
@@ -92,6 +97,7 @@ class VertexEdge {
   VertexEdge(const CcdQuery& q, int p, int u, int v) : q_(q), p_(p), u_(u), v_(v) {}
 
   bool proven() const {
+    if (!ranges_meet()) return false;
     int nonzero = -1;
     for (int k = 0; k < 3; ++k) {
       if (identically_zero(k)) continue;
@@ -103,6 +109,22 @@ class VertexEdge {
   }
 
  private:
+  /// Whether, on every axis, the range swept by p meets the range swept by the edge's ends
+  /// (exact comparisons; a contact needs it: p(t) lies between u(t) and v(t)).
+  bool ranges_meet() const {
+    for (int k = 0; k < 3; ++k) {
+      double lo = INFINITY, hi = -INFINITY;
+      for (int end = 0; end < 2; ++end)
+        for (int i : {u_, v_}) {
+          lo = std::min(lo, end_point(q_, i, end)[k]);
+          hi = std::max(hi, end_point(q_, i, end)[k]);
+        }
+      const double p0 = end_point(q_, p_, 0)[k], p1 = end_point(q_, p_, 1)[k];
+      if (std::max(p0, p1) < lo || std::min(p0, p1) > hi) return false;
+    }
+    return true;
+  }
+
   /// Component k of c is sum over (i, j, s) of s A_i B_j, (i, j, s) = (k+1, k+2, +1), (k+2, k+1, -1).
   static int axis(int k, int shift) { return (k + shift) % 3; }
 

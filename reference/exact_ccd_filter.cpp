@@ -198,12 +198,13 @@ bool jump_to_root(const std::array<Fe, 4>& b, RootInterval& ri) {
 }
 
 /// Narrows `ri` until touches_on decides it: first in one jump close to the root, then by at
-/// most max_narrowings sign-proven splits; 0 when it cannot.
-int decide_root(const CcdQuery& q, const std::array<Fe, 4>& b, RootInterval& ri, int max_narrowings) {
+/// most kMaxNarrowings sign-proven splits; 0 when it cannot.
+int decide_root(const CcdQuery& q, const std::array<Fe, 4>& b, RootInterval& ri) {
+  constexpr int kMaxNarrowings = 99;
   jump_to_root(b, ri);
   for (int iter = 0;; ++iter) {
     const int verdict = touches_on(q, interval(ri.l, ri.r));
-    if (verdict != 0 || iter == max_narrowings || !narrow(b, ri)) return verdict;
+    if (verdict != 0 || iter == kMaxNarrowings || !narrow(b, ri)) return verdict;
   }
 }
 
@@ -244,7 +245,7 @@ CcdFilterVerdict hit_verdict(const std::array<Fe, 4>& b, const RootInterval& ri)
 
 }  // namespace
 
-CcdFilterVerdict certified_float_ccd(const CcdQuery& q, int max_narrowings) {
+CcdFilterVerdict certified_float_ccd(const CcdQuery& q) {
   CcdFilterVerdict miss;
   miss.kind = CcdFilterVerdict::Kind::Miss;
   if (boxes_disjoint(q)) return miss;
@@ -252,7 +253,7 @@ CcdFilterVerdict certified_float_ccd(const CcdQuery& q, int max_narrowings) {
   std::vector<RootInterval> roots;
   if (!isolate(b, 0.0, 1.0, 0, roots)) return {};
   for (RootInterval& ri : roots) {
-    const int verdict = decide_root(q, b, ri, max_narrowings);
+    const int verdict = decide_root(q, b, ri);
     if (verdict == 0) return {};
     if (verdict > 0) return hit_verdict(b, ri);
   }

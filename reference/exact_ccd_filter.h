@@ -32,7 +32,7 @@ struct CcdFilterVerdict {
 /// (vertex-face) or segments-cross (edge-edge) conditions are evaluated over the interval with
 /// error bounds, the interval first narrowed in one jump to a few ulps around an approximation
 /// of the root (regula falsi; kept only where the cubic's signs prove the root inside), then
-/// split at most max_narrowings times while they are undecided: a proven contact is a hit, a
+/// split (at most 99 times) while they are undecided: a proven contact is a hit, a
 /// proven non-contact moves on to the next root, none left is a miss; (4) for a hit the root is
 /// narrowed by bisection on the bit patterns of doubles as long as the cubic's sign is proven,
 /// and when it is bracketed by adjacent doubles, rounded by the sign at their exact midpoint.
@@ -40,6 +40,6 @@ struct CcdFilterVerdict {
 /// rounding error), and a root at a double is never rounded (the cubic vanishes there): exact
 /// arithmetic finishes them. Coplanar-throughout motion, roots at the ends of [0, 1] and contacts
 /// decided by a zero (touching an edge or corner) are never proven. Requires finite input.
-CcdFilterVerdict certified_float_ccd(const CcdQuery& q, int max_narrowings = 99);
+CcdFilterVerdict certified_float_ccd(const CcdQuery& q);
 
 }  // namespace tecido::reference
