@@ -149,12 +149,17 @@ class VertexEdge {
     }
   }
 
-  /// The exact sign of component k's Bernstein coefficient `which` (certified float first).
-  int coefficient_sign(int k, int which) const {
+  /// Component k's Bernstein coefficient `which` (times 2 for the middle one), certified.
+  Fe float_coefficient(int k, int which) const {
     Fe f;
     coefficient(k, which, [&](int a, int b, int end, int kk) { return diff(a, b, end, kk); },
                 [&](Fe x, Fe y, int s) { f = s > 0 ? f + x * y : f - x * y; });
-    if (const int s = sign(f)) return s;
+    return f;
+  }
+
+  /// The exact sign of component k's Bernstein coefficient `which` (certified float first).
+  int coefficient_sign(int k, int which) const {
+    if (const int s = sign(float_coefficient(k, which))) return s;
     DiffExpansion e;
     coefficient(k, which, [&](int a, int b, int end, int kk) { return exact_diff(a, b, end, kk); },
                 [&](const DiffExpansion& x, const DiffExpansion& y, int s) { add_product(e, x, y, s); });
@@ -185,10 +190,17 @@ class VertexEdge {
     const auto x = points_at(t);
     return dot(x[0] - x[1], x[0] - x[2]);
   }
+  /// Component k of c at t, from the coordinates it needs only.
   Fe component_at(int k, Fe t) const {
-    const auto x = points_at(t);
-    const FeV c = cross(x[0] - x[1], x[2] - x[1]);
-    return k == 0 ? c.x : k == 1 ? c.y : c.z;
+    const int i = axis(k, 1), j = axis(k, 2);
+    auto at = [&](int point, int kk) {
+      const std::size_t s = static_cast<std::size_t>(point);
+      const Fe x0 = exact(q_.x0[s][kk]);
+      return x0 + t * (exact(q_.x1[s][kk]) - x0);
+    };
+    const Fe ui = at(u_, i), uj = at(u_, j);
+    const Fe ai = at(p_, i) - ui, aj = at(p_, j) - uj, bi = at(v_, i) - ui, bj = at(v_, j) - uj;
+    return ai * bj - aj * bi;
   }
 
   /// p, u, v collinear throughout: a contact where (p - u).(p - v) <= 0, looked for at t = 0,
@@ -214,13 +226,12 @@ class VertexEdge {
     return false;
   }
 
-  /// Approximations of component k's roots in [0, 1] (from its values at 0, 1/2 and 1).
+  /// Approximations of component k's roots in [0, 1] (from its rounded Bernstein coefficients:
+  /// c(t) = b0 (1 - t)^2 + m t (1 - t) + b2 t^2 with m twice the middle one).
   std::array<double, 2> approximate_roots(int k) const {
-    const double c0 = component_at(k, exact(0)).v, ch = component_at(k, exact(0.5)).v,
-                 c1 = component_at(k, exact(1)).v;
-    // c(t) = a t^2 + b t + c0 through the three values.
-    const double a = 2 * c1 - 4 * ch + 2 * c0, b = 4 * ch - c1 - 3 * c0;
-    const double scale = std::fabs(c0) + std::fabs(ch) + std::fabs(c1);
+    const double b0 = float_coefficient(k, 0).v, m = float_coefficient(k, 1).v, b2 = float_coefficient(k, 2).v;
+    const double a = b0 - m + b2, b = m - 2 * b0, c0 = b0;  // c(t) = a t^2 + b t + c0
+    const double scale = std::fabs(b0) + std::fabs(m) + std::fabs(b2);
     if (std::fabs(a) <= 0x1p-40 * scale) return {b != 0 ? -c0 / b : -1.0, -1.0};
     const double disc = std::max(0.0, b * b - 4 * a * c0);
     const double qq = -0.5 * (b + std::copysign(std::sqrt(disc), b));
