@@ -13,6 +13,7 @@
 // a single root on the union). No step rounds.
 #include "reference/exact_ccd.h"
 
+#include "reference/exact_ccd_feature_contact.h"
 #include "reference/exact_ccd_filter.h"
 
 #include <gmpxx.h>
@@ -682,6 +683,10 @@ ExactCcd exact_ccd(const CcdQuery& q) {
 
 bool exact_ccd_hit(const CcdQuery& q) {
   check_finite(q);
+  // Cheapest certified proofs first: a contact at a vertex (the kind the filter can never prove,
+  // exactly at a zero of its conditions; declined at once on generic input), then the filter,
+  // then exact arithmetic.
+  if (proven_feature_contact(q)) return true;
   const CcdFilterVerdict v = certified_float_ccd(q);
   if (v.kind != CcdFilterVerdict::Kind::Unproven) return v.kind == CcdFilterVerdict::Kind::Hit;
   return solve_hit(integer_query(q));

@@ -45,11 +45,11 @@ inline CcdAnswer to_ccd_answer(const ExactCcd& e) { return CcdAnswer{e.hit, e.hi
 /// infinite.
 ExactCcd exact_ccd(const CcdQuery& q);
 
-/// exact_ccd(q).hit, without the time of contact: a hit the floating-point filter proves is
-/// returned as it stands (the exact path would only narrow its time), so exact arithmetic runs
-/// only on queries the filter cannot decide, and there stops at the first root where the
-/// primitives touch, without rounding it to doubles. For confirming candidates (tecido
-/// selfcollide --to).
+/// exact_ccd(q).hit, without the time of contact: a contact at a vertex proven without GMP
+/// (exact_ccd_feature_contact.h) or a verdict of the floating-point filter is returned as it
+/// stands (the exact path would only narrow its time), so GMP runs only on queries neither can
+/// decide, and there stops at the first root where the primitives touch, without rounding it to
+/// doubles. For confirming candidates (tecido selfcollide --to).
 bool exact_ccd_hit(const CcdQuery& q);
 
 /// The same answer computed by the exact path alone, without the floating-point filter in front

@@ -1,10 +1,8 @@
-// The certified floating-point filter of the exact CCD referee. Every number is a pair (v, e):
-// the exact quantity lies in [v - e, v + e]. Error bounds follow the standard model of IEEE
-// round-to-nearest, |fl(x op y) - x op y| <= u |fl(x op y)| + eta (u = 2^-53, eta = 2^-1074 for
-// results in the subnormal range; additions never underflow), and the bound's own rounding is
-// covered by a factor (1 + 8u) and an absolute 4 eta (see up()). An overflow makes v or e
-// infinite and a NaN fails every comparison: both make a sign uncertain, never wrong.
+// The certified floating-point filter of the exact CCD referee, in the certified arithmetic of
+// certified_float.h.
 #include "reference/exact_ccd_filter.h"
+
+#include "reference/certified_float.h"
 
 #include <algorithm>
 #include <cmath>
@@ -15,59 +13,12 @@
 namespace tecido::reference {
 namespace {
 
-constexpr double kU = 0x1p-53;
-constexpr double kEta = 0x1p-1074;
+using namespace certified;
 
-/// A bound computed in floating point, enlarged so that it bounds the exact bound: the few
-/// roundings of its computation (relative u each, fewer than 7) and underflows (eta each).
-double up(double x) { return x * (1 + 8 * kU) + 4 * kEta; }
-
-struct Fe {
-  double v = 0, e = 0;
-};
-Fe exact(double x) { return {x, 0}; }
-Fe operator+(Fe a, Fe b) {
-  const double v = a.v + b.v;
-  return {v, up(a.e + b.e + kU * std::fabs(v))};
-}
-Fe operator-(Fe a, Fe b) {
-  const double v = a.v - b.v;
-  return {v, up(a.e + b.e + kU * std::fabs(v))};
-}
-Fe operator*(Fe a, Fe b) {
-  const double v = a.v * b.v;
-  return {v, up(std::fabs(a.v) * b.e + std::fabs(b.v) * a.e + a.e * b.e + kU * std::fabs(v) + kEta)};
-}
-Fe third(Fe a) {
-  const double v = a.v / 3;
-  return {v, up(a.e / 3 + kU * std::fabs(v) + kEta)};
-}
-/// +1 or -1 when the sign is proven, 0 when it is not (including every exact zero).
-int sign(Fe a) { return a.v > a.e ? 1 : (-a.v > a.e ? -1 : 0); }
-
-struct FeV {
-  Fe x, y, z;
-};
-FeV operator-(const FeV& a, const FeV& b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
-FeV cross(const FeV& a, const FeV& b) { return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x}; }
-Fe dot(const FeV& a, const FeV& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
-Fe det(const FeV& a, const FeV& b, const FeV& c) { return dot(cross(a, b), c); }
-FeV exact(const Vec3& p) { return {exact(p.x()), exact(p.y()), exact(p.z())}; }
-
-/// The four points at time t (an interval or a double), x0 + t (x1 - x0); the given points
-/// themselves, unrounded, at t = 0 and t = 1.
+/// The four points at time t (an interval or a double).
 std::array<FeV, 4> positions(const CcdQuery& q, Fe t) {
   std::array<FeV, 4> out;
-  const bool at_end = t.e == 0 && (t.v == 0 || t.v == 1);
-  for (std::size_t i = 0; i < 4; ++i) {
-    const FeV p0 = exact(q.x0[i]);
-    if (at_end) {
-      out[i] = t.v == 0 ? p0 : exact(q.x1[i]);
-      continue;
-    }
-    const FeV d = exact(q.x1[i]) - p0;
-    out[i] = {p0.x + t * d.x, p0.y + t * d.y, p0.z + t * d.z};
-  }
+  for (std::size_t i = 0; i < 4; ++i) out[i] = position_at(q.x0[i], q.x1[i], t);
   return out;
 }
 
@@ -201,13 +152,60 @@ bool narrow(const std::array<Fe, 4>& b, RootInterval& ri) {
   return false;
 }
 
-/// Narrows `ri` until touches_on decides it; 0 when it cannot.
-int decide_root(const CcdQuery& q, const std::array<Fe, 4>& b, RootInterval& ri) {
-  for (int iter = 0; iter < 100; ++iter) {
-    const int verdict = touches_on(q, interval(ri.l, ri.r));
-    if (verdict != 0 || !narrow(b, ri)) return verdict;
+/// An approximation of the root in `ri` from the cubic's rounded Bernstein coefficients
+/// (regula falsi, Illinois variant; plain doubles, certifies nothing).
+double approximate_root(const std::array<Fe, 4>& b, const RootInterval& ri) {
+  auto f = [&](double t) {
+    const double s = 1 - t;
+    const double b01 = b[0].v * s + b[1].v * t, b12 = b[1].v * s + b[2].v * t, b23 = b[2].v * s + b[3].v * t;
+    return (b01 * s + b12 * t) * s + (b12 * s + b23 * t) * t;
+  };
+  double l = ri.l, r = ri.r, fl = f(l), fr = f(r);
+  int side = 0;
+  for (int i = 0; i < 60 && l < r; ++i) {
+    double m = (fl == fr) ? 0.5 * (l + r) : r - fr * (r - l) / (fr - fl);
+    if (!(l < m && m < r)) m = 0.5 * (l + r);  // a step onto an end: bisect instead
+    if (!(l < m && m < r)) break;
+    const double fm = f(m);
+    if (fm == 0) return m;
+    if ((fm > 0) == (fl > 0)) {
+      l = m, fl = fm;
+      if (side == -1) fr *= 0.5;
+      side = -1;
+    } else {
+      r = m, fr = fm;
+      if (side == 1) fl *= 0.5;
+      side = 1;
+    }
   }
-  return 0;
+  return std::fabs(f(l)) <= std::fabs(f(r)) ? l : r;
+}
+
+/// Narrows `ri` in one step to a few ulps around its root, when the cubic's signs prove the
+/// root is there (tried at distances 2^-50 to 2^-16 of an approximation); false if not.
+bool jump_to_root(const std::array<Fe, 4>& b, RootInterval& ri) {
+  const double t = approximate_root(b, ri);
+  for (double delta : {0x1p-50, 0x1p-47, 0x1p-44, 0x1p-40, 0x1p-32, 0x1p-24, 0x1p-16}) {
+    const double l = t - delta, r = t + delta;
+    if (!(ri.l < l && r < ri.r)) continue;
+    if (sign(cubic_at(b, l)) == ri.sign_l && sign(cubic_at(b, r)) == -ri.sign_l) {
+      ri.l = l;
+      ri.r = r;
+      return true;
+    }
+  }
+  return false;
+}
+
+/// Narrows `ri` until touches_on decides it: first in one jump close to the root, then by at
+/// most kMaxNarrowings sign-proven splits; 0 when it cannot.
+int decide_root(const CcdQuery& q, const std::array<Fe, 4>& b, RootInterval& ri) {
+  constexpr int kMaxNarrowings = 99;
+  jump_to_root(b, ri);
+  for (int iter = 0;; ++iter) {
+    const int verdict = touches_on(q, interval(ri.l, ri.r));
+    if (verdict != 0 || iter == kMaxNarrowings || !narrow(b, ri)) return verdict;
+  }
 }
 
 std::uint64_t bits(double x) {

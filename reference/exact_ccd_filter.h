@@ -30,7 +30,9 @@ struct CcdFilterVerdict {
 /// Bernstein subdivision (de Casteljau at 7/16, depth <= 12) into intervals on which it is
 /// provably monotone with a sign change, and at each root in increasing order the in-triangle
 /// (vertex-face) or segments-cross (edge-edge) conditions are evaluated over the interval with
-/// error bounds, the interval bisected while they are undecided: a proven contact is a hit, a
+/// error bounds, the interval first narrowed in one jump to a few ulps around an approximation
+/// of the root (regula falsi; kept only where the cubic's signs prove the root inside), then
+/// split (at most 99 times) while they are undecided: a proven contact is a hit, a
 /// proven non-contact moves on to the next root, none left is a miss; (4) for a hit the root is
 /// narrowed by bisection on the bit patterns of doubles as long as the cubic's sign is proven,
 /// and when it is bracketed by adjacent doubles, rounded by the sign at their exact midpoint.
