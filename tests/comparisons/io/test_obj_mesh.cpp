@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 #include <gtest/gtest.h>
 
+#include <cstdlib>
 #include <random>
 
 namespace tecido {
@@ -33,6 +34,28 @@ TEST(ObjMesh, ParsesIndexFormsNegativeIndicesAndSplitsQuads) {
       {0, 1, 2}, {0, 2, 3}, {0, 3, 4}}; // the pentagon's fan; vertex 5 is defined after it
   EXPECT_EQ(m.triangles, expected);
   EXPECT_EQ(m.triangle_line, (std::vector<int>{11, 12, 13, 13, 14, 14, 14}));
+}
+
+TEST(ObjMesh, EveryNumberFormReadsAsStrtodReadsIt) {
+  // Plain numbers take the fast reader (std::from_chars); a sign '+', hex, a subnormal and an
+  // underflow to zero the strtod path: each must give strtod's double (worked values).
+  const io::ObjMesh m = io::parse_obj_text(
+      "v +1 -0.5 .25\n"
+      "v 0x1p-3 1e-310 1e-400\n"
+      "v 0.1 3.0000000000000004 1E2\n"
+      "f +1 2 -1\n",
+      "forms.obj");
+  ASSERT_EQ(m.vertices.size(), 3u);
+  EXPECT_EQ(m.vertices[0], Vec3(1, -0.5, 0.25));
+  EXPECT_EQ(m.vertices[1][0], 0.125);
+  EXPECT_EQ(m.vertices[1][1], std::strtod("1e-310", nullptr));
+  EXPECT_GT(m.vertices[1][1], 0.0) << "a subnormal, not flushed";
+  EXPECT_EQ(m.vertices[1][2], 0.0);
+  EXPECT_EQ(m.vertices[2][0], 0.1);
+  EXPECT_EQ(m.vertices[2][1], 3.0000000000000004);
+  EXPECT_NE(m.vertices[2][1], 3.0);
+  EXPECT_EQ(m.vertices[2][2], 100.0);
+  EXPECT_EQ(m.triangles, (std::vector<std::array<int, 3>>{{0, 1, 2}}));
 }
 
 struct BadObj {
