@@ -189,7 +189,9 @@ void ContinuousSelfCollisionDetector::sift(Worker& w, CcdKind kind, const std::a
   }
 }
 
-void ContinuousSelfCollisionDetector::push(Worker& w, CcdKind kind, const std::array<int, 4>& points, std::uint64_t key,
+// push, merged and overlap run per feature pair (a few hundred thousand per frame at n = 128):
+// forced inline into their callers (left to itself the compiler called them).
+TECIDO_SIMD_INLINE void ContinuousSelfCollisionDetector::push(Worker& w, CcdKind kind, const std::array<int, 4>& points, std::uint64_t key,
                                           bool keep, const std::vector<Vec3>& x0, const std::vector<Vec3>& x1) {
   // Written whether kept or not, counted only when kept: no branch on the (unpredictable)
   // outcome of the box test that decided `keep`.
@@ -212,7 +214,7 @@ void ContinuousSelfCollisionDetector::flush(Worker& w, const std::vector<Vec3>& 
 
 // Boxes of four floats (x, y, z, pad), a register's worth of baseline float lanes
 // (core/simd/float_lanes.h): min and max choose as minps / maxps at every width.
-ContinuousSelfCollisionDetector::FloatBox ContinuousSelfCollisionDetector::merged(const FloatBox& a, const FloatBox& b) {
+TECIDO_SIMD_INLINE ContinuousSelfCollisionDetector::FloatBox ContinuousSelfCollisionDetector::merged(const FloatBox& a, const FloatBox& b) {
   using F = simd::BaselineFloatLanes;
   FloatBox m;
   for (int c = 0; c < 4; c += F::kWidth) {
@@ -222,7 +224,7 @@ ContinuousSelfCollisionDetector::FloatBox ContinuousSelfCollisionDetector::merge
   return m;
 }
 
-bool ContinuousSelfCollisionDetector::overlap(const FloatBox& a, const FloatBox& b) {
+TECIDO_SIMD_INLINE bool ContinuousSelfCollisionDetector::overlap(const FloatBox& a, const FloatBox& b) {
   // Branch-free: the outcome is a coin toss for neighbouring features.
   using F = simd::BaselineFloatLanes;
   unsigned o = 0;

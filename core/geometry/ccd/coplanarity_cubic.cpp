@@ -17,10 +17,7 @@ void ccd_coplanarity_cubic(const CcdSystem& s, double f[4], CcdErrorBound& err) 
   // each at most mx my mz (the largest components of X, Y, Z over both times), so the
   // permanent is at most 6 mx my mz. When the coefficients clear it, that bound certifies the
   // cubic's sign; otherwise (near-coplanar motion) the permanents themselves are computed.
-  double m[3] = {0.0, 0.0, 0.0};
-  for (int v = 0; v < 3; ++v)
-    for (int time = 0; time < 2; ++time)
-      for (int c = 0; c < 3; ++c) m[v] = std::max(m[v], std::fabs(s.d[time][v][c]));
+  const double* m = s.vec_mag;  // the largest components of X, Y, Z over both times
   err.e0 = cubic_cheap_bound<Lanes>(m[0], m[1], m[2]);
   const double lo = std::min(std::min(f[0], f[1]), std::min(f[2], f[3]));
   const double hi = std::max(std::max(f[0], f[1]), std::max(f[2], f[3]));

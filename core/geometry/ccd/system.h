@@ -23,6 +23,7 @@ struct CcdSystem {
   CcdKind kind = CcdKind::VertexFace;
   double d[2][5][3];  ///< d[time][vector][coordinate], after scaling
   double mag[3];      ///< per coordinate: the largest |component| of X, Y, Z at both times
+  double vec_mag[3];  ///< per vector X, Y, Z: its largest |component| at both times
   double scale;       ///< max(mag): the query's scale L of CcdSettings
 };
 

@@ -56,7 +56,10 @@ class TimeSearch {
   enum Outcome { kMiss = 0, kHit = 1, kNotApplicable = 2, kNoBracket = 3 };
 
   /// True when a hit was found in [lo, hi] (answer_ set); false when [lo, hi] holds no contact.
-  bool visit(double lo, double hi, int depth, const CcdBernsteinSet& p, Known kn, bool jump_ok) {
+  bool visit(double lo, double hi, int depth, const CcdBernsteinSet& p, const Known& inherited, bool jump_ok) {
+    // Taken by reference and copied here: passed by value, the struct went through the stack
+    // in pieces and was read back whole, a store-forwarding stall on every call.
+    Known kn = inherited;
     ++nodes_;
     const double ef = ef_.at(depth);
     if (ccd_certified_sign(p.f, 4, 1, ef) != 0) return false;  // rule 1
