@@ -128,35 +128,44 @@ void ContinuousSelfCollisionDetector::list_neighbour_features(int vertex_count) 
   std::vector<int> fill(start.begin(), start.end() - 1);
   for (std::size_t t = 0; t < tris_.size(); ++t)
     for (int v : tris_[t]) around[fill[v]++] = static_cast<int>(t);
-  std::vector<std::array<int, 2>> neighbours;
-  for (int v = 0; v < vertex_count; ++v)
-    for (int a = start[v]; a < start[v + 1]; ++a)
-      for (int b = a + 1; b < start[v + 1]; ++b) neighbours.push_back({around[a], around[b]});
-  std::sort(neighbours.begin(), neighbours.end());
-  neighbours.erase(std::unique(neighbours.begin(), neighbours.end()), neighbours.end());
-  // Their feature pairs, chosen exactly as test_pair chooses them (each primitive pair comes
-  // from the triangle pair of its owners), without the boxes.
-  for (const auto& [i, j] : neighbours) {
-    for (int side = 0; side < 2; ++side) {
-      const TriangleRecord& o = records_[side == 0 ? i : j];
-      const int f = side == 0 ? j : i;
-      const std::array<int, 3>& face = tris_[f];
-      for (int k = 0; k < 3; ++k) {
-        if (!((o.owns_vertex >> k) & 1u) || has_vertex(face, o.v[k])) continue;
-        near_vf_points_.push_back({o.v[k], face[0], face[1], face[2]});
-        near_vf_keys_.push_back(pair_key(o.v[k], f));
-      }
+  // In lexicographic order of (i, j), i < j: for each i its later neighbours, sorted and
+  // deduplicated in a short list (a handful per triangle; no sort of the whole mesh's pairs).
+  std::vector<int> later;
+  for (int i = 0; i < static_cast<int>(tris_.size()); ++i) {
+    const std::array<int, 3>& t = tris_[static_cast<std::size_t>(i)];
+    later.clear();
+    if (t[0] == t[1] || t[1] == t[2] || t[0] == t[2]) later.push_back(i);  // a corner repeated: i meets itself
+    for (int v : t)
+      for (int a = start[v]; a < start[v + 1]; ++a)
+        if (around[a] > i) later.push_back(around[a]);
+    std::sort(later.begin(), later.end());
+    later.erase(std::unique(later.begin(), later.end()), later.end());
+    for (int j : later) list_feature_pairs(i, j);
+  }
+}
+
+/// The feature pairs of neighbouring triangles i < j, chosen exactly as test_pair chooses them
+/// (each primitive pair comes from the triangle pair of its owners), without the boxes.
+void ContinuousSelfCollisionDetector::list_feature_pairs(int i, int j) {
+  for (int side = 0; side < 2; ++side) {
+    const TriangleRecord& o = records_[side == 0 ? i : j];
+    const int f = side == 0 ? j : i;
+    const std::array<int, 3>& face = tris_[f];
+    for (int k = 0; k < 3; ++k) {
+      if (!((o.owns_vertex >> k) & 1u) || has_vertex(face, o.v[k])) continue;
+      near_vf_points_.push_back({o.v[k], face[0], face[1], face[2]});
+      near_vf_keys_.push_back(pair_key(o.v[k], f));
     }
-    for (int a = 0; a < 3; ++a) {
-      for (int b = 0; b < 3; ++b) {
-        if (!((records_[i].owns_edge >> a) & 1u) || !((records_[j].owns_edge >> b) & 1u)) continue;
-        const int ea = records_[i].edge[a], eb = records_[j].edge[b];
-        if (share_vertex(edges_[ea], edges_[eb])) continue;
-        const MeshEdge& e = edges_[std::min(ea, eb)];
-        const MeshEdge& g = edges_[std::max(ea, eb)];
-        near_ee_points_.push_back({e[0], e[1], g[0], g[1]});
-        near_ee_keys_.push_back(pair_key(std::min(ea, eb), std::max(ea, eb)));
-      }
+  }
+  for (int a = 0; a < 3; ++a) {
+    for (int b = 0; b < 3; ++b) {
+      if (!((records_[i].owns_edge >> a) & 1u) || !((records_[j].owns_edge >> b) & 1u)) continue;
+      const int ea = records_[i].edge[a], eb = records_[j].edge[b];
+      if (share_vertex(edges_[ea], edges_[eb])) continue;
+      const MeshEdge& e = edges_[std::min(ea, eb)];
+      const MeshEdge& g = edges_[std::max(ea, eb)];
+      near_ee_points_.push_back({e[0], e[1], g[0], g[1]});
+      near_ee_keys_.push_back(pair_key(std::min(ea, eb), std::max(ea, eb)));
     }
   }
 }

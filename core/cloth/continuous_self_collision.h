@@ -156,6 +156,8 @@ class ContinuousSelfCollisionDetector {
   void run_workers(const std::vector<Vec3>& x0, const std::vector<Vec3>& x1);
   /// Fills the near_ lists with the feature pairs of triangles that share a vertex.
   void list_neighbour_features(int vertex_count);
+  /// Appends the feature pairs of neighbouring triangles i <= j (i == j: a corner repeated).
+  void list_feature_pairs(int i, int j);
   /// The test's answer on a query whose box stages were passed.
   bool run(const CcdQuery& q) const;
   /// Sorts the keys of the pairs found and writes them out as pairs into out_.
