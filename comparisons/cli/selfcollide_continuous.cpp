@@ -4,10 +4,12 @@
 #include "comparisons/io/input_error.h"
 #include "comparisons/io/obj_mesh.h"
 #include "comparisons/engines/continuous_self_collision_engines.h"
+#include "core/platform/parallel_parts.h"
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include <array>
 #include <iostream>
 #include <iterator>
 
@@ -52,11 +54,24 @@ void print_contacts(const ContinuousContacts& c) {
   std::cout << chunk << "]}";
 }
 
+/// Both frames, read side by side when two threads are allowed; an error names the first file
+/// that has one, as reading them in turn would (run_parts rethrows the lowest share's).
+std::array<io::ObjMesh, 2> load_frames(const std::string& start, const std::string& end, int threads) {
+  std::array<io::ObjMesh, 2> m;
+  const std::array<const std::string*, 2> files{&start, &end};
+  const int parts = threads >= 2 ? 2 : 1;
+  run_parts(parts, [&](int part) {
+    for (int k = part; k < 2; k += parts) m[static_cast<std::size_t>(k)] = io::load_obj_mesh(*files[static_cast<std::size_t>(k)]);
+  });
+  return m;
+}
+
 }  // namespace
 
 int run_selfcollide_continuous(const std::string& start, const std::string& end, const std::string& engines, int threads) {
   const auto names = parse_engine_list(engines, continuous_self_collision_engines(), "continuous self-collision");
-  const io::ObjMesh m0 = io::load_obj_mesh(start), m1 = io::load_obj_mesh(end);
+  const std::array<io::ObjMesh, 2> frames = load_frames(start, end, threads);
+  const io::ObjMesh &m0 = frames[0], &m1 = frames[1];
   check_same_mesh(m0, m1, start, end);
   for (const auto& n : names) check_continuous_self_collision_size(n, m0.triangles.size(), start);
   std::cout << "{";

@@ -100,6 +100,7 @@ TEST(CliSelfCollideContinuous, DifferentMeshesExitTwoNamingTheFiles) {
   for (int k = 0; k < 2300; ++k) big += "v " + std::to_string(k) + " 0 " + std::to_string(k % 2) + "\n";
   for (int k = 1; k + 2 <= 2300; ++k) big += "f " + std::to_string(k) + " " + std::to_string(k + 1) + " " + std::to_string(k + 2) + "\n";
   write_text(dir / "big.obj", big);
+  write_text(dir / "nan.obj", "v x 0 0\n");
   struct Case {
     std::string args, message;
   };
@@ -109,6 +110,10 @@ TEST(CliSelfCollideContinuous, DifferentMeshesExitTwoNamingTheFiles) {
       {"--mesh '" + d + "/big.obj' --to '" + d + "/big.obj' --engines exact", "exact tests every pair and takes at most 2048 triangles"},
       {"--mesh '" + d + "/a.obj' --to '" + d + "/a.obj' --engines fcl", "unknown continuous self-collision engine \"fcl\""},
       {"--mesh '" + d + "/a.obj' --to '" + d + "/missing.obj'", d + "/missing.obj"},
+      // Read side by side on two threads, the frames' errors are still reported as in turn:
+      // the start frame's when both have one.
+      {"--mesh '" + d + "/nan.obj' --to '" + d + "/missing.obj' --threads 2", d + "/nan.obj: line 1: \"x\" is not a number"},
+      {"--mesh '" + d + "/a.obj' --to '" + d + "/nan.obj' --threads 2", d + "/nan.obj: line 1: \"x\" is not a number"},
   };
   for (const Case& c : cases) {
     const auto r = run_cli("selfcollide " + c.args + " --json");
