@@ -13,8 +13,16 @@
 /// The self-query descends the tree against itself (a node with itself: each child with itself
 /// and every two overlapping children with each other; two distinct nodes: every overlapping
 /// pair of their children), as in Box2D v3's dynamic_tree and most cloth codes, branch-free
-/// where the outcome is a coin toss. State lives in flat arrays; a query allocates nothing once
-/// its buffers have grown.
+/// where the outcome is a coin toss. State lives in flat arrays; a one-thread query allocates
+/// nothing once its buffers have grown.
+///
+/// Threads: that depth-first traversal writes a node pair's own leaf pairs, then the traversal
+/// from each child pair it pushed, the last pushed first; so a query lists, on the calling
+/// thread, the pieces of it down to depth kTaskLevel ("tasks", the same list at any thread
+/// count), threads run the tasks into their own buffers, and the buffers are copied out in task
+/// order: the one-thread output, pair for pair. refit() leaves the node boxes to the next query,
+/// which recomputes the independent subtrees below depth kRefitLevel on its threads, then the
+/// nodes above.
 ///
 /// Cost model (256x256 folded cloth: ~54k nodes, ~6 MB, beyond L2): the query is bound by the
 /// first touch of each node and by the 4 x 4 lane masks. So a pair of leaves is handled where
@@ -145,8 +153,12 @@ class TriangleBvh {
   /// Appends to tasks_ the tasks of the traversal from (a, b) at depth `level`, in order.
   template <bool Kinetic>
   void plan(int a, int b, int level, bool wide);
+  /// Appends the pairs of one task; stack: room for stack_bound_ node pairs.
   template <bool Kinetic>
   void run_task(const Task& task, bool wide, std::uint64_t* stack, std::vector<std::array<int, 2>>& out) const;
+  /// The depth-first traversal of a whole task, on the wide or the narrow path.
+  template <bool Kinetic, bool Wide>
+  void descend(const Task& task, std::uint64_t* stack, std::vector<std::array<int, 2>>& out) const;
   /// Appends the triangle pairs of leaves a and b (a == b: the leaf with itself).
   template <bool Kinetic>
   void leaf_pairs(int a, int b, bool wide, std::vector<std::array<int, 2>>& out) const;
