@@ -64,7 +64,7 @@ class TriangleBvh {
   /// (touching counts) and that share no vertex index; each pair once, in a deterministic
   /// (traversal) order. Uses the boxes of the last build()/refit(). Runs on up to `threads`
   /// threads (the calling one included; one per kTrianglesPerPart triangles at most): the
-  /// same pairs in the same order at any thread count (Method: tasks).
+  /// same pairs in the same order at any thread count (Threads, above).
   void overlapping_pairs(std::vector<std::array<int, 2>>& out, int threads = 1);
 
   /// After the two-frame refit: the pairs of overlapping_pairs() less those whose kinetic
