@@ -37,9 +37,7 @@ inline int lowest_bit(unsigned m) { return __builtin_ctz(m); }
 
 using Narrow = simd2::FloatLanes;
 
-// Forced inline: where `wide` is a constant (TriangleBvh::run_task), the other path folds away
-// and the SSE2 masks are compiled into the traversal's loop.
-TECIDO_SIMD_INLINE unsigned box_mask(const float* alo, const float* ahi, const float* blo, const float* bhi, bool wide) {
+unsigned box_mask(const float* alo, const float* ahi, const float* blo, const float* bhi, bool wide) {
 #if TECIDO_SIMD_X86
   if (wide) return simd8::box_mask16<simd8::FloatLanes>(alo, ahi, blo, bhi);
 #endif
@@ -47,8 +45,8 @@ TECIDO_SIMD_INLINE unsigned box_mask(const float* alo, const float* ahi, const f
   return simd2::box_mask16<Narrow>(alo, ahi, blo, bhi);
 }
 
-TECIDO_SIMD_INLINE unsigned leaf_mask(const float* alo, const float* ahi, const float* blo, const float* bhi,
-                                      const int* av, const int* bv, bool wide) {
+unsigned leaf_mask(const float* alo, const float* ahi, const float* blo, const float* bhi, const int* av,
+                   const int* bv, bool wide) {
 #if TECIDO_SIMD_X86
   if (wide) return simd8::leaf_mask16<simd8::FloatLanes>(alo, ahi, blo, bhi, av, bv);
 #endif
@@ -491,21 +489,11 @@ void TriangleBvh::run_task(const Task& task, bool wide, std::uint64_t* stack, st
     leaf_pairs<Kinetic>(task.a, task.b, wide, out);
     return;
   }
-  // The loop is compiled once per path, `wide` a constant in each.
-  if (wide) {
-    descend<Kinetic, true>(task, stack, out);
-  } else {
-    descend<Kinetic, false>(task, stack, out);
-  }
-}
-
-template <bool Kinetic, bool Wide>
-void TriangleBvh::descend(const Task& task, std::uint64_t* stack, std::vector<std::array<int, 2>>& out) const {
   std::size_t top = 0;
   stack[top++] = pack_pair(task.a, task.b);
   while (top > 0) {
     const std::uint64_t entry = stack[--top];
-    visit<Kinetic, true>(pair_first(entry), pair_second(entry), Wide, [&](int c, int d) { stack[top++] = pack_pair(c, d); },
+    visit<Kinetic, true>(pair_first(entry), pair_second(entry), wide, [&](int c, int d) { stack[top++] = pack_pair(c, d); },
                          out);
   }
 }

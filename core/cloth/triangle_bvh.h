@@ -156,9 +156,6 @@ class TriangleBvh {
   /// Appends the pairs of one task; stack: room for stack_bound_ node pairs.
   template <bool Kinetic>
   void run_task(const Task& task, bool wide, std::uint64_t* stack, std::vector<std::array<int, 2>>& out) const;
-  /// The depth-first traversal of a whole task, on the wide or the narrow path.
-  template <bool Kinetic, bool Wide>
-  void descend(const Task& task, std::uint64_t* stack, std::vector<std::array<int, 2>>& out) const;
   /// Appends the triangle pairs of leaves a and b (a == b: the leaf with itself).
   template <bool Kinetic>
   void leaf_pairs(int a, int b, bool wide, std::vector<std::array<int, 2>>& out) const;
