@@ -133,8 +133,9 @@ class TriangleBvh {
     int part;
     std::size_t begin, end;
   };
-  /// A thread's traversal stack and pairs, kept across queries.
-  struct PartState {
+  /// A thread's traversal stack and pairs, kept across queries. A cache line each: a thread
+  /// moves its vectors' ends at every pair, which must not evict another thread's line.
+  struct alignas(64) PartState {
     std::vector<std::uint64_t> stack;
     std::vector<std::array<int, 2>> out;
   };
