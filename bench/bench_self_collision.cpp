@@ -8,6 +8,7 @@
 #include <benchmark/benchmark.h>
 
 #include <cmath>
+#include <string>
 
 namespace {
 
@@ -62,6 +63,24 @@ void core_frame(benchmark::State& state, bool flat) {
   state.counters["candidates"] = static_cast<double>(det.last_candidates());
 }
 
+// BM_SelfCollision/bvh-threads:<t>/<n>: the broad phase alone (refit + self-query of the box
+// tree) of the folded frame on t threads (wall time), for the threads' speed-up of the part
+// the tree does.
+void bvh_threads(benchmark::State& state, int threads) {
+  const Frame f = folded_cloth(static_cast<int>(state.range(0)));
+  TriangleBvh bvh;
+  bvh.build(f.rest, f.tris);
+  std::vector<std::array<int, 2>> pairs;
+  for (auto _ : state) {
+    bvh.refit(f.x);
+    pairs.clear();
+    bvh.overlapping_pairs(pairs, threads);
+    benchmark::DoNotOptimize(pairs.data());
+  }
+  state.counters["candidates"] = static_cast<double>(pairs.size());
+  state.counters["parts"] = bvh.last_parts();
+}
+
 void brute_frame(benchmark::State& state) {
   const Frame f = folded_cloth(static_cast<int>(state.range(0)));
   for (auto _ : state) benchmark::DoNotOptimize(self_collision_pairs_brute(f.x, f.tris).size());
@@ -78,6 +97,10 @@ const int registered = [] {
   for (int n : {32, 64, 128, 256}) {
     benchmark::RegisterBenchmark("BM_SelfCollision/core", core_frame, false)->Arg(n)->Unit(benchmark::kMillisecond);
     benchmark::RegisterBenchmark("BM_SelfCollision/core-flat", core_frame, true)->Arg(n)->Unit(benchmark::kMillisecond);
+    for (int t : {1, 2})
+      if (n >= 128)
+        benchmark::RegisterBenchmark(("BM_SelfCollision/bvh-threads:" + std::to_string(t)).c_str(), bvh_threads, t)
+            ->Arg(n)->Unit(benchmark::kMillisecond)->UseRealTime();
     if (n <= 64) benchmark::RegisterBenchmark("BM_SelfCollision/core-brute", brute_frame)->Arg(n)->Unit(benchmark::kMillisecond);
     benchmark::RegisterBenchmark("BM_SelfCollision/fcl", fcl_frame)->Arg(n)->Unit(benchmark::kMillisecond);
   }

@@ -362,7 +362,7 @@ const ContinuousContacts& ContinuousSelfCollisionDetector::detect(const std::vec
   moved_.resize(x1.size());
   for (std::size_t v = 0; v < x1.size(); ++v) moved_[v] = x1[v] - mean;
   bvh_.refit(x0, moved_);
-  bvh_.moving_pairs(tri_pairs_);
+  bvh_.moving_pairs(tri_pairs_, threads_);
   run_workers(x0, x1);
   emit_sorted();
   return out_;

@@ -78,7 +78,7 @@ SelfCollisionDetector::SelfCollisionDetector(const std::vector<std::array<int, 3
 const std::vector<TrianglePair>& SelfCollisionDetector::detect(const std::vector<Vec3>& x) {
   bvh_.refit(x);
   candidates_.clear();
-  bvh_.overlapping_pairs(candidates_);
+  bvh_.overlapping_pairs(candidates_, threads_);
   pairs_.clear();
   // A thread is started per share: below a few thousand candidates a share costs less than a start.
   const int parts = static_cast<int>(std::min<std::size_t>(static_cast<std::size_t>(threads_), 1 + candidates_.size() / 4096));

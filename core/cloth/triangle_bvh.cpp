@@ -1,10 +1,12 @@
 #include "core/cloth/triangle_bvh.h"
 
 #include "core/geometry/outward_float.h"
+#include "core/platform/parallel_parts.h"
 #include "core/simd/dispatch.h"
 #include "core/simd/widths.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cfloat>
 #include <cmath>
 #include <cstdint>
@@ -64,6 +66,9 @@ void TriangleBvh::build(const std::vector<Vec3>& x, const std::vector<std::array
   tri_count_ = triangles.size();
   nodes_.clear();
   node_box_.clear();
+  subtrees_.clear();
+  top_nodes_.clear();
+  pending_ = Pending::kNone;
   stack_bound_ = 1;
   if (n == 0) return;
   std::vector<Vec3> centroid(n);
@@ -75,18 +80,21 @@ void TriangleBvh::build(const std::vector<Vec3>& x, const std::vector<std::array
   std::iota(order.begin(), order.end(), 0);
   nodes_.reserve(static_cast<std::size_t>(n) / 2 + 1);
   nodes_.emplace_back();
-  const int depth = build_node(0, 0, n, centroid, order, triangles);
+  const int depth = build_node(0, 0, n, 0, centroid, order, triangles);
   node_box_.resize(nodes_.size());
+  // The refit's order: the nodes above the subtrees children first (larger indices first).
+  std::sort(top_nodes_.begin(), top_nodes_.end(), [](int p, int q) { return p > q; });
   // A pop removes one pair and pushes at most kWidth^2; pairs deeper down the tree of node
   // pairs come later, and its paths are at most 2 * depth + 1 long.
   stack_bound_ = static_cast<std::size_t>(kWidth * kWidth) * (2 * static_cast<std::size_t>(depth) + 2) + 1;
   refit(x);
 }
 
-int TriangleBvh::build_node(int node, int begin, int end, const std::vector<Vec3>& centroid, std::vector<int>& order,
-                            const std::vector<std::array<int, 3>>& triangles) {
+int TriangleBvh::build_node(int node, int begin, int end, int level, const std::vector<Vec3>& centroid,
+                            std::vector<int>& order, const std::vector<std::array<int, 3>>& triangles) {
   const int count = end - begin;
   if (count <= kWidth) {
+    if (level <= kRefitLevel) subtrees_.push_back({node, 0, 0});
     Node& nd = nodes_[node];
     LeafVerts& lv = nd.lv;
     nd.leaf = 1;
@@ -150,10 +158,14 @@ int TriangleBvh::build_node(int node, int begin, int end, const std::vector<Vec3
   int depth = 0;
   unsigned leaf_kids = 0;
   for (int g = 0; g < groups; ++g) {
-    depth = std::max(depth, build_node(first + g, bounds[g], bounds[g + 1], centroid, order, triangles));
+    depth = std::max(depth, build_node(first + g, bounds[g], bounds[g + 1], level + 1, centroid, order, triangles));
     leaf_kids |= static_cast<unsigned>(nodes_[first + g].leaf) << g;
   }
   nodes_[node].leaf_kids = leaf_kids;
+  // The nodes below this one are [first, nodes_.size()): children are appended before their
+  // own subtrees are built, and every later node descends from them.
+  if (level == kRefitLevel) subtrees_.push_back({node, first, static_cast<int>(nodes_.size())});
+  if (level < kRefitLevel) top_nodes_.push_back(node);
   return depth + 1;
 }
 
@@ -169,7 +181,7 @@ void TriangleBvh::refit(const std::vector<Vec3>& x) {
     }
     vlo_[v][3] = vhi_[v][3] = 0.0f;
   }
-  refit_from_vertex_bounds();
+  pending_ = Pending::kOneFrame;
 }
 
 void TriangleBvh::refit(const std::vector<Vec3>& x0, const std::vector<Vec3>& x1) {
@@ -186,90 +198,112 @@ void TriangleBvh::refit(const std::vector<Vec3>& x0, const std::vector<Vec3>& x1
     }
     b.lo[0][3] = b.hi[0][3] = b.lo[1][3] = b.hi[1][3] = 0.0f;
   }
-  refit_frames();
+  pending_ = Pending::kFrames;
 }
 
-void TriangleBvh::refit_frames() {
-  // One bottom-up sweep: each lane's boxes at both frames, and its swept box (their union:
-  // float_down and float_up are monotone, so this is the outward box of both frames).
-  frames_.resize(nodes_.size());
-  for (int f = 0; f < 2; ++f) frame_box_[f].resize(nodes_.size());
-  for (std::size_t k = nodes_.size(); k-- > 0;) {
-    Node& nd = nodes_[k];
-    Frames& fr = frames_[k];
-    for (int lane = 0; lane < kWidth; ++lane) {
-      float lo[2][4] = {{kInf, kInf, kInf, kInf}, {kInf, kInf, kInf, kInf}};  // empty lanes: inverted
-      float hi[2][4] = {{-kInf, -kInf, -kInf, -kInf}, {-kInf, -kInf, -kInf, -kInf}};
-      if (lane < nd.count) {
-        for (int f = 0; f < 2; ++f) {
-          for (int d = 0; d < 3; ++d) {
-            if (nd.leaf) {
-              const FrameBounds& a = fbounds_[nd.lv.v[0][lane]];
-              const FrameBounds& b = fbounds_[nd.lv.v[1][lane]];
-              const FrameBounds& c = fbounds_[nd.lv.v[2][lane]];
-              lo[f][d] = std::min(a.lo[f][d], std::min(b.lo[f][d], c.lo[f][d]));
-              hi[f][d] = std::max(a.hi[f][d], std::max(b.hi[f][d], c.hi[f][d]));
-            } else {
-              lo[f][d] = frame_box_[f][nd.child[lane]].lo[d];
-              hi[f][d] = frame_box_[f][nd.child[lane]].hi[d];
-            }
+void TriangleBvh::refit_frames_node(std::size_t k) {
+  // Each lane's boxes at both frames, and its swept box (their union: float_down and float_up
+  // are monotone, so this is the outward box of both frames).
+  Node& nd = nodes_[k];
+  Frames& fr = frames_[k];
+  for (int lane = 0; lane < kWidth; ++lane) {
+    float lo[2][4] = {{kInf, kInf, kInf, kInf}, {kInf, kInf, kInf, kInf}};  // empty lanes: inverted
+    float hi[2][4] = {{-kInf, -kInf, -kInf, -kInf}, {-kInf, -kInf, -kInf, -kInf}};
+    if (lane < nd.count) {
+      for (int f = 0; f < 2; ++f) {
+        for (int d = 0; d < 3; ++d) {
+          if (nd.leaf) {
+            const FrameBounds& a = fbounds_[nd.lv.v[0][lane]];
+            const FrameBounds& b = fbounds_[nd.lv.v[1][lane]];
+            const FrameBounds& c = fbounds_[nd.lv.v[2][lane]];
+            lo[f][d] = std::min(a.lo[f][d], std::min(b.lo[f][d], c.lo[f][d]));
+            hi[f][d] = std::max(a.hi[f][d], std::max(b.hi[f][d], c.hi[f][d]));
+          } else {
+            lo[f][d] = frame_box_[f][nd.child[lane]].lo[d];
+            hi[f][d] = frame_box_[f][nd.child[lane]].hi[d];
           }
         }
-      }
-      for (int d = 0; d < 3; ++d) {
-        for (int f = 0; f < 2; ++f) {
-          fr.lo[f][d][lane] = lo[f][d];
-          fr.hi[f][d][lane] = hi[f][d];
-        }
-        nd.lo[d][lane] = std::min(lo[0][d], lo[1][d]);
-        nd.hi[d][lane] = std::max(hi[0][d], hi[1][d]);
       }
     }
     for (int d = 0; d < 3; ++d) {
       for (int f = 0; f < 2; ++f) {
-        Box& box = frame_box_[f][k];
-        box.lo[d] = std::min(std::min(fr.lo[f][d][0], fr.lo[f][d][1]), std::min(fr.lo[f][d][2], fr.lo[f][d][3]));
-        box.hi[d] = std::max(std::max(fr.hi[f][d][0], fr.hi[f][d][1]), std::max(fr.hi[f][d][2], fr.hi[f][d][3]));
+        fr.lo[f][d][lane] = lo[f][d];
+        fr.hi[f][d][lane] = hi[f][d];
       }
-      node_box_[k].lo[d] = std::min(frame_box_[0][k].lo[d], frame_box_[1][k].lo[d]);
-      node_box_[k].hi[d] = std::max(frame_box_[0][k].hi[d], frame_box_[1][k].hi[d]);
+      nd.lo[d][lane] = std::min(lo[0][d], lo[1][d]);
+      nd.hi[d][lane] = std::max(hi[0][d], hi[1][d]);
     }
+  }
+  for (int d = 0; d < 3; ++d) {
+    for (int f = 0; f < 2; ++f) {
+      Box& box = frame_box_[f][k];
+      box.lo[d] = std::min(std::min(fr.lo[f][d][0], fr.lo[f][d][1]), std::min(fr.lo[f][d][2], fr.lo[f][d][3]));
+      box.hi[d] = std::max(std::max(fr.hi[f][d][0], fr.hi[f][d][1]), std::max(fr.hi[f][d][2], fr.hi[f][d][3]));
+    }
+    node_box_[k].lo[d] = std::min(frame_box_[0][k].lo[d], frame_box_[1][k].lo[d]);
+    node_box_[k].hi[d] = std::max(frame_box_[0][k].hi[d], frame_box_[1][k].hi[d]);
   }
 }
 
-void TriangleBvh::refit_from_vertex_bounds() {
-  // Children always have larger indices than their parent: one reverse sweep suffices.
-  for (std::size_t k = nodes_.size(); k-- > 0;) {
-    Node& nd = nodes_[k];
-    if (nd.leaf) {
-      const LeafVerts& lv = nd.lv;
-      for (int lane = 0; lane < nd.count; ++lane) {
-        const auto& a = vlo_[lv.v[0][lane]];
-        const auto& b = vlo_[lv.v[1][lane]];
-        const auto& c = vlo_[lv.v[2][lane]];
-        const auto& A = vhi_[lv.v[0][lane]];
-        const auto& B = vhi_[lv.v[1][lane]];
-        const auto& C = vhi_[lv.v[2][lane]];
-        for (int d = 0; d < 3; ++d) {
-          nd.lo[d][lane] = std::min(a[d], std::min(b[d], c[d]));
-          nd.hi[d][lane] = std::max(A[d], std::max(B[d], C[d]));
-        }
-      }
-    } else {
-      for (int lane = 0; lane < nd.count; ++lane) {
-        const Box& cb = node_box_[nd.child[lane]];
-        for (int d = 0; d < 3; ++d) {
-          nd.lo[d][lane] = cb.lo[d];
-          nd.hi[d][lane] = cb.hi[d];
-        }
+void TriangleBvh::refit_node(std::size_t k) {
+  Node& nd = nodes_[k];
+  if (nd.leaf) {
+    const LeafVerts& lv = nd.lv;
+    for (int lane = 0; lane < nd.count; ++lane) {
+      const auto& a = vlo_[lv.v[0][lane]];
+      const auto& b = vlo_[lv.v[1][lane]];
+      const auto& c = vlo_[lv.v[2][lane]];
+      const auto& A = vhi_[lv.v[0][lane]];
+      const auto& B = vhi_[lv.v[1][lane]];
+      const auto& C = vhi_[lv.v[2][lane]];
+      for (int d = 0; d < 3; ++d) {
+        nd.lo[d][lane] = std::min(a[d], std::min(b[d], c[d]));
+        nd.hi[d][lane] = std::max(A[d], std::max(B[d], C[d]));
       }
     }
-    Box& box = node_box_[k];
-    for (int d = 0; d < 3; ++d) {
-      box.lo[d] = std::min(std::min(nd.lo[d][0], nd.lo[d][1]), std::min(nd.lo[d][2], nd.lo[d][3]));
-      box.hi[d] = std::max(std::max(nd.hi[d][0], nd.hi[d][1]), std::max(nd.hi[d][2], nd.hi[d][3]));
+  } else {
+    for (int lane = 0; lane < nd.count; ++lane) {
+      const Box& cb = node_box_[nd.child[lane]];
+      for (int d = 0; d < 3; ++d) {
+        nd.lo[d][lane] = cb.lo[d];
+        nd.hi[d][lane] = cb.hi[d];
+      }
     }
   }
+  Box& box = node_box_[k];
+  for (int d = 0; d < 3; ++d) {
+    box.lo[d] = std::min(std::min(nd.lo[d][0], nd.lo[d][1]), std::min(nd.lo[d][2], nd.lo[d][3]));
+    box.hi[d] = std::max(std::max(nd.hi[d][0], nd.hi[d][1]), std::max(nd.hi[d][2], nd.hi[d][3]));
+  }
+}
+
+void TriangleBvh::sweep_pending(int parts) {
+  if (pending_ == Pending::kNone) return;
+  const bool frames = pending_ == Pending::kFrames;
+  pending_ = Pending::kNone;
+  if (frames) {
+    frames_.resize(nodes_.size());
+    for (int f = 0; f < 2; ++f) frame_box_[f].resize(nodes_.size());
+  }
+  const auto refit_one = [this, frames](std::size_t k) { frames ? refit_frames_node(k) : refit_node(k); };
+  // Children have larger indices than their parent, and a subtree's nodes below its root are
+  // one contiguous range: each subtree is refitted by one reverse sweep of its range, then its
+  // root; the subtrees are independent (they share no node), so they can run on any thread.
+  // The few nodes above them follow, children first. Every box is computed by the same
+  // operations from the same inputs whichever thread does it.
+  const auto subtree = [&](const Subtree& s) {
+    for (int k = s.end; k-- > s.begin;) refit_one(static_cast<std::size_t>(k));
+    refit_one(static_cast<std::size_t>(s.root));
+  };
+  if (parts <= 1) {
+    for (const Subtree& s : subtrees_) subtree(s);
+  } else {
+    std::atomic<std::size_t> next{0};
+    run_parts(parts, [&](int) {
+      for (std::size_t t; (t = next.fetch_add(1, std::memory_order_relaxed)) < subtrees_.size();) subtree(subtrees_[t]);
+    });
+  }
+  for (int k : top_nodes_) refit_one(static_cast<std::size_t>(k));
 }
 
 unsigned TriangleBvh::lanes_overlapping(const Node& b, const float lo[3], const float hi[3]) {
@@ -342,93 +376,166 @@ inline void TriangleBvh::leaf_pairs(int a, int b, bool wide, std::vector<std::ar
   }
 }
 
-void TriangleBvh::overlapping_pairs(std::vector<std::array<int, 2>>& out) { pairs<false>(out); }
+void TriangleBvh::overlapping_pairs(std::vector<std::array<int, 2>>& out, int threads) { pairs<false>(out, threads); }
 
-void TriangleBvh::moving_pairs(std::vector<std::array<int, 2>>& out) { pairs<true>(out); }
+void TriangleBvh::moving_pairs(std::vector<std::array<int, 2>>& out, int threads) { pairs<true>(out, threads); }
 
-template <bool Kinetic>
-void TriangleBvh::pairs(std::vector<std::array<int, 2>>& out) {
-  if (nodes_.empty()) return;
-  const bool wide = use_wide_ && wide_kernel_available();
-  if (nodes_[0].leaf) {
-    leaf_pairs<Kinetic>(0, 0, wide, out);
-    return;
-  }
+namespace {
+/// A node pair packed in one 64-bit word (a low, b high): written and read back whole, so the
+/// pop right after a push is forwarded from the store buffer.
+inline std::uint64_t pack_pair(int a, int b) {
+  return static_cast<std::uint64_t>(static_cast<std::uint32_t>(a)) | static_cast<std::uint64_t>(static_cast<std::uint32_t>(b)) << 32;
+}
+inline int pair_first(std::uint64_t e) { return static_cast<int>(static_cast<std::uint32_t>(e)); }
+inline int pair_second(std::uint64_t e) { return static_cast<int>(static_cast<std::uint32_t>(e >> 32)); }
+}  // namespace
+
+template <bool Kinetic, bool Emit, class Push>
+inline void TriangleBvh::visit(int a, int b, bool wide, Push&& push, std::vector<std::array<int, 2>>& out) const {
   // Node pairs still to visit are pairs of internal nodes, or a leaf with an internal node: a
   // pair of leaves is handled where it is found (leaf_kids marks the lanes that are leaves),
   // which spares the stack round trip, a reload of both nodes and an unpredictable branch on
-  // their kinds for the most frequent kind of pair. The order of the output is still that of
-  // a depth-first traversal, deterministic.
-  // A stack entry is the pair packed in one 64-bit word (a low, b high): written and read
-  // back whole, so the pop right after a push is forwarded from the store buffer.
-  auto pack = [](int a, int b) {
-    return static_cast<std::uint64_t>(static_cast<std::uint32_t>(a)) |
-           static_cast<std::uint64_t>(static_cast<std::uint32_t>(b)) << 32;
-  };
-  auto prefetch_children = [this](const Node& n) {
+  // their kinds for the most frequent kind of pair.
+  const auto prefetch_children = [this](const Node& n) {
     const char* first = reinterpret_cast<const char*>(&nodes_[n.child[0]]);
     for (std::size_t off = 0; off < n.count * sizeof(Node); off += 64) __builtin_prefetch(first + off);
   };
-  stack_.resize(stack_bound_);
-  std::uint64_t* stack = stack_.data();
-  std::size_t top = 0;
-  stack[top++] = pack(0, 0);
-  while (top > 0) {
-    const std::uint64_t entry = stack[--top];
-    const int a = static_cast<int>(static_cast<std::uint32_t>(entry));
-    const int b = static_cast<int>(static_cast<std::uint32_t>(entry >> 32));
-    const Node& na = nodes_[a];
-    const Node& nb = nodes_[b];
-    if (na.leaf == nb.leaf) {
-      // Two internal nodes, or one with itself: every overlapping pair of children, each
-      // child with itself for a node with itself. The 4 x 4 mask is built without branches.
-      // The children (contiguous records) are about to be read: start fetching them now.
-      prefetch_children(na);
-      if (a != b) prefetch_children(nb);
-      unsigned mask = box_mask(na.lo[0], na.hi[0], nb.lo[0], nb.hi[0], wide);
-      if (Kinetic && mask) mask &= kinetic_if_apart(frames_[a], frames_[b], mask, wide);
-      if (a == b) {
-        mask &= kLaterLanes;
-        for (int k = 0; k < na.count; ++k) {
-          const int c = na.child[k];
-          if ((na.leaf_kids >> k) & 1u) {
-            leaf_pairs<Kinetic>(c, c, wide, out);
-          } else {
-            stack[top++] = pack(c, c);
-          }
-        }
-      }
-      for (; mask; mask &= mask - 1) {
-        const int bit = lowest_bit(mask);
-        const int k = bit / kWidth, l = bit % kWidth;
-        if ((na.leaf_kids >> k) & (nb.leaf_kids >> l) & 1u) {
-          leaf_pairs<Kinetic>(na.child[k], nb.child[l], wide, out);
-        } else {
-          stack[top++] = pack(na.child[k], nb.child[l]);
-        }
-      }
-    } else if (na.leaf) {
-      // A leaf against an internal node: descend the internal one.
-      prefetch_children(nb);
-      for (unsigned m = lanes_overlapping(nb, node_box_[a].lo, node_box_[a].hi); m; m &= m - 1) {
-        const int l = lowest_bit(m);
-        if ((nb.leaf_kids >> l) & 1u) {
-          leaf_pairs<Kinetic>(a, nb.child[l], wide, out);
-        } else {
-          stack[top++] = pack(a, nb.child[l]);
-        }
-      }
-    } else {
-      prefetch_children(na);
-      for (unsigned m = lanes_overlapping(na, node_box_[b].lo, node_box_[b].hi); m; m &= m - 1) {
-        const int k = lowest_bit(m);
+  const auto leaves = [&](int p, int q) {
+    if (Emit) leaf_pairs<Kinetic>(p, q, wide, out);
+  };
+  const Node& na = nodes_[a];
+  const Node& nb = nodes_[b];
+  if (na.leaf == nb.leaf) {
+    // Two internal nodes, or one with itself: every overlapping pair of children, each
+    // child with itself for a node with itself. The 4 x 4 mask is built without branches.
+    // The children (contiguous records) are about to be read: start fetching them now.
+    prefetch_children(na);
+    if (a != b) prefetch_children(nb);
+    unsigned mask = box_mask(na.lo[0], na.hi[0], nb.lo[0], nb.hi[0], wide);
+    if (Kinetic && mask) mask &= kinetic_if_apart(frames_[a], frames_[b], mask, wide);
+    if (a == b) {
+      mask &= kLaterLanes;
+      for (int k = 0; k < na.count; ++k) {
+        const int c = na.child[k];
         if ((na.leaf_kids >> k) & 1u) {
-          leaf_pairs<Kinetic>(na.child[k], b, wide, out);
+          leaves(c, c);
         } else {
-          stack[top++] = pack(na.child[k], b);
+          push(c, c);
         }
       }
     }
+    for (; mask; mask &= mask - 1) {
+      const int bit = lowest_bit(mask);
+      const int k = bit / kWidth, l = bit % kWidth;
+      if ((na.leaf_kids >> k) & (nb.leaf_kids >> l) & 1u) {
+        leaves(na.child[k], nb.child[l]);
+      } else {
+        push(na.child[k], nb.child[l]);
+      }
+    }
+  } else if (na.leaf) {
+    // A leaf against an internal node: descend the internal one.
+    prefetch_children(nb);
+    for (unsigned m = lanes_overlapping(nb, node_box_[a].lo, node_box_[a].hi); m; m &= m - 1) {
+      const int l = lowest_bit(m);
+      if ((nb.leaf_kids >> l) & 1u) {
+        leaves(a, nb.child[l]);
+      } else {
+        push(a, nb.child[l]);
+      }
+    }
+  } else {
+    prefetch_children(na);
+    for (unsigned m = lanes_overlapping(na, node_box_[b].lo, node_box_[b].hi); m; m &= m - 1) {
+      const int k = lowest_bit(m);
+      if ((na.leaf_kids >> k) & 1u) {
+        leaves(na.child[k], b);
+      } else {
+        push(na.child[k], b);
+      }
+    }
+  }
+}
+
+template <bool Kinetic>
+void TriangleBvh::plan(int a, int b, int level, bool wide) {
+  const Node& na = nodes_[a];
+  const Node& nb = nodes_[b];
+  if (level >= kTaskLevel || na.leaf || nb.leaf) {
+    tasks_.push_back({a, b, 1});
+    return;
+  }
+  // The depth-first traversal from (a, b) writes the leaf pairs (a, b)'s own visit finds,
+  // then the whole traversal from each child pair it pushes, the last pushed first (a stack):
+  // the tasks are listed in that order.
+  std::array<std::uint64_t, kWidth * kWidth + kWidth> kids;
+  std::size_t n = 0;
+  std::vector<std::array<int, 2>> none;
+  visit<Kinetic, false>(a, b, wide, [&](int c, int d) { kids[n++] = pack_pair(c, d); }, none);
+  tasks_.push_back({a, b, 0});
+  while (n > 0) {
+    --n;
+    plan<Kinetic>(pair_first(kids[n]), pair_second(kids[n]), level + 1, wide);
+  }
+}
+
+template <bool Kinetic>
+void TriangleBvh::run_task(const Task& task, bool wide, std::uint64_t* stack, std::vector<std::array<int, 2>>& out) const {
+  if (!task.whole) {
+    visit<Kinetic, true>(task.a, task.b, wide, [](int, int) {}, out);
+    return;
+  }
+  if (nodes_[task.a].leaf && nodes_[task.b].leaf) {  // the root is a leaf
+    leaf_pairs<Kinetic>(task.a, task.b, wide, out);
+    return;
+  }
+  std::size_t top = 0;
+  stack[top++] = pack_pair(task.a, task.b);
+  while (top > 0) {
+    const std::uint64_t entry = stack[--top];
+    visit<Kinetic, true>(pair_first(entry), pair_second(entry), wide, [&](int c, int d) { stack[top++] = pack_pair(c, d); },
+                         out);
+  }
+}
+
+template <bool Kinetic>
+void TriangleBvh::pairs(std::vector<std::array<int, 2>>& out, int threads) {
+  last_parts_ = 1;
+  if (nodes_.empty()) return;
+  const bool wide = use_wide_ && wide_kernel_available();
+  // Below a few thousand triangles per thread, starting a thread costs more than it saves.
+  const int parts = static_cast<int>(
+      std::max<std::size_t>(1, std::min<std::size_t>(static_cast<std::size_t>(std::max(threads, 1)), tri_count_ / kTrianglesPerPart)));
+  last_parts_ = parts;
+  sweep_pending(parts);
+  // The traversal is cut into tasks (plan): the same list whatever the number of threads.
+  // Each task's pairs are those of one piece of the depth-first traversal, and concatenated in
+  // task order they are the traversal's output.
+  tasks_.clear();
+  plan<Kinetic>(0, 0, 0, wide);
+  if (part_state_.size() < static_cast<std::size_t>(parts)) part_state_.resize(static_cast<std::size_t>(parts));
+  for (int p = 0; p < parts; ++p) part_state_[static_cast<std::size_t>(p)].stack.resize(stack_bound_);
+  if (parts == 1) {
+    std::uint64_t* stack = part_state_[0].stack.data();
+    for (const Task& task : tasks_) run_task<Kinetic>(task, wide, stack, out);
+    return;
+  }
+  // Tasks are taken in list order by whichever thread is free; each writes its pairs to its
+  // thread's buffer and records where. The pairs are then copied out in task order.
+  task_out_.resize(tasks_.size());
+  std::atomic<std::size_t> next{0};
+  run_parts(parts, [&](int part) {
+    PartState& ps = part_state_[static_cast<std::size_t>(part)];
+    ps.out.clear();
+    for (std::size_t t; (t = next.fetch_add(1, std::memory_order_relaxed)) < tasks_.size();) {
+      const std::size_t begin = ps.out.size();
+      run_task<Kinetic>(tasks_[t], wide, ps.stack.data(), ps.out);
+      task_out_[t] = {part, begin, ps.out.size()};
+    }
+  });
+  for (const TaskOutput& r : task_out_) {
+    const auto& src = part_state_[static_cast<std::size_t>(r.part)].out;
+    out.insert(out.end(), src.begin() + static_cast<std::ptrdiff_t>(r.begin), src.begin() + static_cast<std::ptrdiff_t>(r.end));
   }
 }
 

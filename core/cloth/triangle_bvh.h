@@ -13,8 +13,16 @@
 /// The self-query descends the tree against itself (a node with itself: each child with itself
 /// and every two overlapping children with each other; two distinct nodes: every overlapping
 /// pair of their children), as in Box2D v3's dynamic_tree and most cloth codes, branch-free
-/// where the outcome is a coin toss. State lives in flat arrays; a query allocates nothing once
-/// its buffers have grown.
+/// where the outcome is a coin toss. State lives in flat arrays; a one-thread query allocates
+/// nothing once its buffers have grown.
+///
+/// Threads: that depth-first traversal writes a node pair's own leaf pairs, then the traversal
+/// from each child pair it pushed, the last pushed first; so a query lists, on the calling
+/// thread, the pieces of it down to depth kTaskLevel ("tasks", the same list at any thread
+/// count), threads run the tasks into their own buffers, and the buffers are copied out in task
+/// order: the one-thread output, pair for pair. refit() leaves the node boxes to the next query,
+/// which recomputes the independent subtrees below depth kRefitLevel on its threads, then the
+/// nodes above.
 ///
 /// Cost model (256x256 folded cloth: ~54k nodes, ~6 MB, beyond L2): the query is bound by the
 /// first touch of each node and by the 4 x 4 lane masks. So a pair of leaves is handled where
@@ -42,6 +50,8 @@ class TriangleBvh {
   void build(const std::vector<Vec3>& x, const std::vector<std::array<int, 3>>& triangles);
 
   /// Recomputes every box from positions x (same vertex array the triangles index; finite).
+  /// The vertices' bounds are taken now; the nodes' boxes are brought up to date by the next
+  /// query, on that query's threads (the boxes are the same either way).
   void refit(const std::vector<Vec3>& x);
 
   /// Recomputes every box as the swept box of linear motion from x0 to x1: the union of the
@@ -52,16 +62,24 @@ class TriangleBvh {
 
   /// Appends to `out` every pair (i, j) of triangle ids, i < j, whose closed boxes overlap
   /// (touching counts) and that share no vertex index; each pair once, in a deterministic
-  /// (traversal) order. Uses the boxes of the last build()/refit().
-  void overlapping_pairs(std::vector<std::array<int, 2>>& out);
+  /// (traversal) order. Uses the boxes of the last build()/refit(). Runs on up to `threads`
+  /// threads (the calling one included; one per kTrianglesPerPart triangles at most): the
+  /// same pairs in the same order at any thread count (Threads, above).
+  void overlapping_pairs(std::vector<std::array<int, 2>>& out, int threads = 1);
 
   /// After the two-frame refit: the pairs of overlapping_pairs() less those whose kinetic
   /// boxes never meet (the boxes at t = 0 and t = 1 interpolated in time, as in
   /// core/geometry/ccd/kinetic_boxes.h; each triangle lies in its kinetic box at every time,
   /// so such a pair cannot touch), decided by a certified test in single precision
   /// (kinetic_lanes in triangle_bvh.cpp) on the lanes of leaf pairs and of internal node
-  /// pairs (a node's boxes at each frame contain its triangles'). In the same order.
-  void moving_pairs(std::vector<std::array<int, 2>>& out);
+  /// pairs (a node's boxes at each frame contain its triangles'). In the same order, and the
+  /// same at any thread count.
+  void moving_pairs(std::vector<std::array<int, 2>>& out, int threads = 1);
+
+  /// Triangles per thread below which a query uses fewer threads than asked.
+  static constexpr std::size_t kTrianglesPerPart = 2048;
+  /// Threads the last query ran on.
+  int last_parts() const { return last_parts_; }
 
   /// The leaf and node-pair masks use one 16-lane AVX-512 pass when the CPU has AVX-512F
   /// (checked at run time), SSE2 otherwise; the output does not depend on the path. Tests can
@@ -73,6 +91,10 @@ class TriangleBvh {
   std::size_t node_count() const { return nodes_.size(); }
 
  private:
+  /// The refit's independent subtrees are rooted at this depth (root: 0), up to 4^3 = 64.
+  static constexpr int kRefitLevel = 3;
+  /// The traversal's tasks: node pairs at this depth (or above, where a leaf is met).
+  static constexpr int kTaskLevel = 4;
   /// The vertex ids of a leaf's triangles, lane by lane (unused lanes: -1, -2, -3).
   struct LeafVerts {
     int v[3][kWidth];
@@ -97,11 +119,44 @@ class TriangleBvh {
     float lo[2][3][kWidth], hi[2][3][kWidth];
   };
 
-  int build_node(int node, int begin, int end, const std::vector<Vec3>& centroid, std::vector<int>& order,
+  /// A subtree refitted as one job: its root, and the nodes below it, [begin, end).
+  struct Subtree {
+    int root, begin, end;
+  };
+  /// A piece of the traversal: the whole depth-first traversal from node pair (a, b)
+  /// (whole = 1), or only the leaf pairs (a, b)'s own visit finds (whole = 0).
+  struct Task {
+    int a, b, whole;
+  };
+  /// Where a task's pairs went: part's buffer, [begin, end).
+  struct TaskOutput {
+    int part;
+    std::size_t begin, end;
+  };
+  /// A thread's traversal stack and pairs, kept across queries. A cache line each: a thread
+  /// moves its vectors' ends at every pair, which must not evict another thread's line.
+  struct alignas(64) PartState {
+    std::vector<std::uint64_t> stack;
+    std::vector<std::array<int, 2>> out;
+  };
+  /// The node sweep refit() left to the next query.
+  enum class Pending { kNone, kOneFrame, kFrames };
+
+  int build_node(int node, int begin, int end, int level, const std::vector<Vec3>& centroid, std::vector<int>& order,
                  const std::vector<std::array<int, 3>>& triangles);
   /// The traversal of overlapping_pairs (Kinetic false) and moving_pairs (true).
   template <bool Kinetic>
-  void pairs(std::vector<std::array<int, 2>>& out);
+  void pairs(std::vector<std::array<int, 2>>& out, int threads);
+  /// One step of the traversal at node pair (a, b): appends the pairs of the leaf pairs it
+  /// finds (when Emit) and calls push(c, d) for each node pair to descend, in traversal order.
+  template <bool Kinetic, bool Emit, class Push>
+  void visit(int a, int b, bool wide, Push&& push, std::vector<std::array<int, 2>>& out) const;
+  /// Appends to tasks_ the tasks of the traversal from (a, b) at depth `level`, in order.
+  template <bool Kinetic>
+  void plan(int a, int b, int level, bool wide);
+  /// Appends the pairs of one task; stack: room for stack_bound_ node pairs.
+  template <bool Kinetic>
+  void run_task(const Task& task, bool wide, std::uint64_t* stack, std::vector<std::array<int, 2>>& out) const;
   /// Appends the triangle pairs of leaves a and b (a == b: the leaf with itself).
   template <bool Kinetic>
   void leaf_pairs(int a, int b, bool wide, std::vector<std::array<int, 2>>& out) const;
@@ -114,11 +169,13 @@ class TriangleBvh {
   static unsigned lanes_overlapping(const Node& b, const float lo[3], const float hi[3]);
   /// Bit k set when triangle (v0, v1, v2) shares a vertex with lane k's triangle of leaf b.
   static unsigned lanes_sharing(const LeafVerts& b, int v0, int v1, int v2);
-  /// Box refit from the per-vertex bounds vlo_, vhi_.
-  void refit_from_vertex_bounds();
-  /// Every node's lanes at both frames (frames_) and swept (the nodes' own lo, hi), from the
-  /// per-vertex bounds of each frame, fbounds_.
-  void refit_frames();
+  /// Node k's boxes from its children's (or its triangles' per-vertex bounds vlo_, vhi_).
+  void refit_node(std::size_t k);
+  /// Node k's lanes at both frames (frames_) and swept (the node's own lo, hi), from its
+  /// children's or the per-vertex bounds of each frame, fbounds_.
+  void refit_frames_node(std::size_t k);
+  /// The node sweep pending_ asks for, on up to `parts` threads.
+  void sweep_pending(int parts);
 
   std::size_t tri_count_ = 0;
   std::vector<Node> nodes_;          ///< nodes_[0] is the root; children after their parent
@@ -131,7 +188,13 @@ class TriangleBvh {
   std::vector<FrameBounds> fbounds_;
   std::vector<Frames> frames_;                     ///< per node (two-frame refit)
   std::vector<Box> frame_box_[2];                  ///< each node's own box per frame
-  std::vector<std::uint64_t> stack_;  ///< node pairs still to visit, packed (a | b << 32)
+  std::vector<Subtree> subtrees_;     ///< the refit's jobs
+  std::vector<int> top_nodes_;        ///< the nodes above subtrees_, children first
+  Pending pending_ = Pending::kNone;
+  std::vector<Task> tasks_;            ///< the last query's tasks, in traversal order
+  std::vector<TaskOutput> task_out_;   ///< per task (queries on several threads)
+  std::vector<PartState> part_state_;  ///< per thread; the stacks hold node pairs (a | b << 32)
+  int last_parts_ = 1;
   /// Bound on the stack's size: a pop pushes at most kWidth^2 pairs minus the one it removed,
   /// and a path down the tree of node pairs is at most 2 * depth + 1 long.
   std::size_t stack_bound_ = 1;
