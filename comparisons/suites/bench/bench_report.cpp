@@ -34,10 +34,11 @@ std::string sizes_text(const Settings& s) {
 std::string method_markdown(const Settings& s, const io::Json& context, const std::string& command,
                             const std::string& sse2_command) {
   std::string md = fmt::format(
-      "Google Benchmark, CPU time of the benchmark's one thread, min time {:g} s per benchmark, this machine, this run: `{}` (rows in "
-      "`bench/bench.json`), then `{}` (`bench/bench-sse2.json`), the spring kernel of a CPU without AVX. Ratios compare "
-      "engines measured in the same run. These are measurements, never checks.\n\n",
-      s.min_time, command, sse2_command);
+      "Google Benchmark, CPU time of the benchmark's one thread (wall time for the threaded rows), min time {:g} s per benchmark{}, "
+      "this machine, this run: `{}` (rows in `bench/bench.json`), then `{}` (`bench/bench-sse2.json`), the spring kernel of a CPU "
+      "without AVX. Ratios compare engines measured in the same run. These are measurements, never checks.\n\n",
+      s.min_time, s.repetitions > 1 ? fmt::format(", each the median of {} repetitions (the first run)", s.repetitions) : "", command,
+      sse2_command);
   if (context.is_object())
     md += fmt::format("Machine: {} CPUs at {} MHz; Google Benchmark library build type {}.\n\n",
                       context.value("num_cpus", 0), context.value("mhz_per_cpu", 0), context.value("library_build_type", "?"));

@@ -24,12 +24,14 @@ std::string bench_binary() {
 }
 
 BenchRun run_bench(const std::string& bin, const std::string& dir, const std::string& name, double min_time,
-                   const std::string& filter, const std::string& simd) {
+                   const std::string& filter, const std::string& simd, int repetitions) {
   BenchRun run;
   std::filesystem::create_directories(dir);
   const std::string json = dir + "/" + name + ".json";
-  const std::string args = fmt::format("--benchmark_format=json --benchmark_min_time={:g}{}", min_time,
-                                       filter.empty() ? "" : " --benchmark_filter='" + filter + "'");
+  const std::string args =
+      fmt::format("--benchmark_format=json --benchmark_min_time={:g}{}{}", min_time,
+                  repetitions > 1 ? fmt::format(" --benchmark_repetitions={} --benchmark_report_aggregates_only=true", repetitions) : "",
+                  filter.empty() ? "" : " --benchmark_filter='" + filter + "'");
   const std::string env = simd.empty() ? "" : "TECIDO_SIMD=" + simd + " ";
   run.command = env + "build/bin/tecido-bench " + args;
   const std::string cmd =

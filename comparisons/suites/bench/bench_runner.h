@@ -20,9 +20,11 @@ struct BenchRun {
 };
 
 /// Runs `bin` with --benchmark_format=json --benchmark_min_time=`min_time`, --benchmark_filter=`filter`
-/// when not empty and TECIDO_SIMD=`simd` when not empty; the JSON goes to `dir`/`name`.json and
-/// stderr to `dir`/`name`.stderr.
+/// when not empty and TECIDO_SIMD=`simd` when not empty, and with `repetitions` > 1 each benchmark
+/// that many times, the document holding their aggregates only (--benchmark_repetitions,
+/// --benchmark_report_aggregates_only); the JSON goes to `dir`/`name`.json and stderr to
+/// `dir`/`name`.stderr.
 BenchRun run_bench(const std::string& bin, const std::string& dir, const std::string& name, double min_time,
-                   const std::string& filter = "", const std::string& simd = "");
+                   const std::string& filter = "", const std::string& simd = "", int repetitions = 1);
 
 }  // namespace tecido::suites::bench

@@ -16,7 +16,7 @@ SuiteResult run_bench_suite(const SuiteContext& ctx) {
     return res;
   }
   const std::string dir = ctx.out_dir + "/bench";
-  const bench::BenchRun main = bench::run_bench(bin, dir, "bench", s.min_time, s.main_filter);
+  const bench::BenchRun main = bench::run_bench(bin, dir, "bench", s.min_time, s.main_filter, "", s.repetitions);
   if (!main.error.empty()) {
     res.markdown = main.error + ".\n";
     return res;

@@ -40,13 +40,22 @@ std::string benchmark_base_name(const std::string& name) {
   return base;
 }
 
+namespace {
+bool is_median(const io::Json& b) { return b.value("run_type", "iteration") == "aggregate" && b.value("aggregate_name", "") == "median"; }
+std::string run_name(const io::Json& b) { return b.value("run_name", b.value("name", "")); }
+}  // namespace
+
 std::vector<BenchRow> parse_benchmark_json(const io::Json& doc) {
   std::vector<BenchRow> rows;
   if (!doc.is_object() || !doc.contains("benchmarks")) return rows;
+  std::set<std::string> repeated;  // benchmarks with a median of repetitions: it stands for them
+  for (const auto& b : doc["benchmarks"])
+    if (is_median(b)) repeated.insert(run_name(b));
   for (const auto& b : doc["benchmarks"]) {
-    if (b.value("run_type", "iteration") != "iteration" || b.value("error_occurred", false)) continue;
+    const bool iteration = b.value("run_type", "iteration") == "iteration";
+    if (!(is_median(b) || (iteration && !repeated.count(run_name(b)))) || b.value("error_occurred", false)) continue;
     BenchRow r;
-    r.name = b.value("run_name", b.value("name", ""));
+    r.name = run_name(b);
     r.label = b.value("label", "");
     // CPU time: on a machine shared with other work, wall time also counts the time others take
     // (every benchmark here is one thread without I/O, so on an idle machine the two agree).

@@ -16,7 +16,9 @@ struct BenchRow {
   io::Json counters = io::Json::object();  ///< user counters ("springs", "nodes", ...)
 };
 
-/// The iteration rows of a document (aggregates and errored runs left out), in its order.
+/// The rows of a document, in its order: a benchmark's median over its repetitions when the
+/// document has one (named as its runs are), else its iteration row; other aggregates (mean,
+/// stddev, ...) and errored runs left out.
 std::vector<BenchRow> parse_benchmark_json(const io::Json& doc);
 
 /// `name` less the measurement attributes Google Benchmark appends ("/real_time", "/iterations:1",

@@ -35,6 +35,11 @@ TEST(BenchRunner, PassesTheArgumentsAndTheKernelChoice) {
             "--benchmark_filter='BM_ClothStep/'");
   const BenchRun plain = run_bench(fake.string(), (dir / "out").string(), "y", 0.25);
   EXPECT_EQ(plain.doc["simd"], "") << "TECIDO_SIMD is not set unless asked for";
+  EXPECT_EQ(plain.doc["args"].get<std::string>().find("repetitions"), std::string::npos) << "one measurement unless asked for";
+  const BenchRun repeated = run_bench(fake.string(), (dir / "out").string(), "r", 0.25, "", "", 3);
+  EXPECT_EQ(repeated.command,
+            "build/bin/tecido-bench --benchmark_format=json --benchmark_min_time=0.25 --benchmark_repetitions=3 "
+            "--benchmark_report_aggregates_only=true");
   testing::write_text(fake, "#!/bin/sh\nexit 3\n");
   const BenchRun bad = run_bench(fake.string(), (dir / "out").string(), "z", 0.25);
   EXPECT_NE(bad.error.find("failed; see `bench/z.stderr`"), std::string::npos) << bad.error;

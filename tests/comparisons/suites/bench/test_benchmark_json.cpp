@@ -1,5 +1,5 @@
 // Google Benchmark's JSON read by the bench suite (comparisons/suites/bench/benchmark_json.*):
-// iteration rows only, CPU time in nanoseconds whatever the unit, user counters and labels kept.
+// iteration rows, or the median where a benchmark was repeated; CPU time in nanoseconds whatever the unit, user counters and labels kept.
 #include "comparisons/suites/bench/benchmark_json.h"
 
 #include <gtest/gtest.h>
@@ -38,6 +38,29 @@ TEST(BenchmarkJson, IterationRowsInNanosecondsOfCpuTime) {
   EXPECT_TRUE(std::isnan(ns_per_item(rows, "BM_Nothing")));
   EXPECT_EQ(find_row(rows, "BM_Broken"), nullptr);
   EXPECT_TRUE(parse_benchmark_json(io::Json::parse("{}")).empty());
+}
+
+TEST(BenchmarkJson, ARepeatedBenchmarkIsItsMedian) {
+  // --benchmark_repetitions=3 with and without --benchmark_report_aggregates_only: the median
+  // stands for the benchmark, its runs, mean and spread are left out.
+  const auto rows = parse_benchmark_json(io::Json::parse(R"({"benchmarks":[
+    {"name":"BM_A/real_time","run_name":"BM_A/real_time","run_type":"iteration","real_time":5,"cpu_time":5,"time_unit":"ms"},
+    {"name":"BM_A/real_time","run_name":"BM_A/real_time","run_type":"iteration","real_time":9,"cpu_time":9,"time_unit":"ms"},
+    {"name":"BM_A/real_time_mean","run_name":"BM_A/real_time","run_type":"aggregate","aggregate_name":"mean",
+     "real_time":7,"cpu_time":7,"time_unit":"ms"},
+    {"name":"BM_A/real_time_median","run_name":"BM_A/real_time","run_type":"aggregate","aggregate_name":"median",
+     "real_time":6,"cpu_time":5.5,"time_unit":"ms","pairs":88},
+    {"name":"BM_A/real_time_stddev","run_name":"BM_A/real_time","run_type":"aggregate","aggregate_name":"stddev",
+     "real_time":2,"cpu_time":2,"time_unit":"ms"},
+    {"name":"BM_B","run_name":"BM_B","run_type":"iteration","real_time":3,"cpu_time":3,"time_unit":"ns"}
+  ]})"));
+  ASSERT_EQ(rows.size(), 2u);
+  EXPECT_EQ(rows[0].name, "BM_A/real_time");
+  EXPECT_DOUBLE_EQ(rows[0].real_ns_per_iter, 6e6);
+  EXPECT_DOUBLE_EQ(rows[0].ns_per_iter, 5.5e6);
+  EXPECT_EQ(rows[0].counters["pairs"], 88);
+  EXPECT_EQ(find_row(rows, "BM_A"), &rows[0]);
+  EXPECT_EQ(rows[1].name, "BM_B") << "a benchmark without repetitions keeps its one row";
 }
 
 TEST(BenchmarkJson, RowsFoundByNameLessTheirMeasurementAttributes) {
