@@ -19,6 +19,10 @@ struct BenchRun {
   std::string command;  ///< the command line, as a user would type it (for the report)
 };
 
+/// Google Benchmark's JSON with its non-numbers made JSON: a value NaN, inf or -inf (the
+/// coefficient of variation of a counter that is 0 in every repetition is 0 / 0) becomes null.
+std::string without_nan(std::string text);
+
 /// Runs `bin` with --benchmark_format=json --benchmark_min_time=`min_time`, --benchmark_filter=`filter`
 /// when not empty and TECIDO_SIMD=`simd` when not empty, and with `repetitions` > 1 each benchmark
 /// that many times, the document holding their aggregates only (--benchmark_repetitions,

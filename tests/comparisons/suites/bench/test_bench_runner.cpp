@@ -46,5 +46,13 @@ TEST(BenchRunner, PassesTheArgumentsAndTheKernelChoice) {
   std::filesystem::remove_all(dir);
 }
 
+TEST(BenchRunner, NonNumbersBecomeNull) {
+  EXPECT_EQ(without_nan(R"({"a": NaN, "b": inf,"c": -inf}
+)"), R"({"a": null, "b": null,"c": null}
+)");
+  EXPECT_EQ(without_nan(R"({"name": "x: NaNa", "v": 1})"), R"({"name": "x: NaNa", "v": 1})") << "only whole values";
+  EXPECT_EQ(without_nan(R"({"v": NaN})"), R"({"v": null})");
+}
+
 }  // namespace
 }  // namespace tecido::suites::bench
