@@ -44,6 +44,9 @@ constexpr int kChunk = 256;
 /// Fewest triangle and feature pairs worth a thread of their own.
 constexpr std::size_t kMinShare = 4096;
 
+/// Chunks of the pair lists per thread, taken in turn by whichever thread is free.
+constexpr int kChunksPerThread = 16;
+
 CcdQuery query_of(CcdKind kind, const std::array<int, 4>& points, const std::vector<Vec3>& x0, const std::vector<Vec3>& x1) {
   CcdQuery q;
   q.kind = kind;
@@ -310,11 +313,17 @@ void ContinuousSelfCollisionDetector::sift_neighbours(Worker& w, int kind, std::
   }
 }
 
-void ContinuousSelfCollisionDetector::work(Worker& w, int part, int parts, const std::vector<Vec3>& x0,
+void ContinuousSelfCollisionDetector::work(Worker& w, std::atomic<int>& next, int chunks, const std::vector<Vec3>& x0,
                                           const std::vector<Vec3>& x1) {
   w.vf_keys.clear();
   w.ee_keys.clear();
   w.tests = 0;
+  for (int chunk; (chunk = next.fetch_add(1, std::memory_order_relaxed)) < chunks;) work_chunk(w, chunk, chunks, x0, x1);
+  flush(w, x0, x1);
+}
+
+void ContinuousSelfCollisionDetector::work_chunk(Worker& w, int part, int parts, const std::vector<Vec3>& x0,
+                                                const std::vector<Vec3>& x1) {
   const auto share = [&](std::size_t n, int k) { return share_begin(n, k, parts); };
   // The pairs' records and their corners' boxes are scattered: fetch them ahead (records 16
   // pairs ahead, the boxes of the corners they name 8 ahead).
@@ -335,7 +344,6 @@ void ContinuousSelfCollisionDetector::work(Worker& w, int part, int parts, const
     const std::size_t n = (kind == 0 ? near_vf_points_ : near_ee_points_).size();
     sift_neighbours(w, kind, share(n, part), share(n, part + 1), x0, x1);
   }
-  flush(w, x0, x1);
 }
 
 const ContinuousContacts& ContinuousSelfCollisionDetector::detect(const std::vector<Vec3>& x0, const std::vector<Vec3>& x1) {
@@ -374,7 +382,11 @@ void ContinuousSelfCollisionDetector::run_workers(const std::vector<Vec3>& x0, c
   const int parts = static_cast<int>(std::min<std::size_t>(static_cast<std::size_t>(threads_), 1 + work_items / kMinShare));
   parts_ = parts;
   if (static_cast<int>(workers_.size()) < parts) workers_.resize(static_cast<std::size_t>(parts));
-  run_parts(parts, [&](int part) { work(workers_[static_cast<std::size_t>(part)], part, parts, x0, x1); });
+  // Threads take chunks as they free up (contact-dense regions of the list cost many times
+  // more than the rest, so equal contiguous shares left one thread waiting for the other).
+  std::atomic<int> next{0};
+  const int chunks = parts == 1 ? 1 : kChunksPerThread * parts;
+  run_parts(parts, [&](int part) { work(workers_[static_cast<std::size_t>(part)], next, chunks, x0, x1); });
   // Each primitive pair is tested by one worker: the merged keys, sorted, are the same pairs
   // whatever the number of parts.
   vf_keys_.clear();

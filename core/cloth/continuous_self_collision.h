@@ -32,6 +32,7 @@
 #include "core/cloth/triangle_bvh.h"
 
 #include <array>
+#include <atomic>
 #include <cstddef>
 #include <cstdint>
 #include <functional>
@@ -136,7 +137,10 @@ class ContinuousSelfCollisionDetector {
     std::vector<std::uint64_t> ee_keys;  ///< pairs found: edge id << 32 | edge id, ids ascending
   };
   /// Share `part` of `parts` of the work (tree pairs and neighbour pairs), flushed.
-  void work(Worker& w, int part, int parts, const std::vector<Vec3>& x0, const std::vector<Vec3>& x1);
+  /// Takes chunks from `next` until all `chunks` are taken, then flushes the worker's queues.
+  void work(Worker& w, std::atomic<int>& next, int chunks, const std::vector<Vec3>& x0, const std::vector<Vec3>& x1);
+  /// Chunk `part` of `parts`: a contiguous share of the tree pairs and of each neighbour list.
+  void work_chunk(Worker& w, int part, int parts, const std::vector<Vec3>& x0, const std::vector<Vec3>& x1);
   /// The feature pairs of tree pair (i, j) whose swept boxes overlap, queued.
   void test_pair(Worker& w, int i, int j, const std::vector<Vec3>& x0, const std::vector<Vec3>& x1);
   /// Queues one primitive pair when `keep`; runs the queue when it is full.

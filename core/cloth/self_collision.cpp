@@ -4,6 +4,7 @@
 #include "core/platform/parallel_parts.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 
 namespace tecido {
@@ -86,14 +87,18 @@ const std::vector<TrianglePair>& SelfCollisionDetector::detect(const std::vector
   if (parts == 1) {
     narrow_phase(x, 0, candidates_.size(), pairs_);
   } else {
-    // Contiguous shares of the candidates, one per thread; the pairs found, merged and
-    // sorted, are the same whatever the number of shares.
+    // Contiguous chunks of the candidates (16 per thread), each taken by whichever thread is
+    // free: contact-dense stretches of the list cost more than the rest. The pairs found,
+    // merged and sorted, are the same whichever thread found them.
     if (static_cast<int>(part_pairs_.size()) < parts) part_pairs_.resize(static_cast<std::size_t>(parts));
     const std::size_t nc = candidates_.size();
+    const int chunks = 16 * parts;
+    std::atomic<int> next{0};
     run_parts(parts, [&](int part) {
       std::vector<TrianglePair>& out = part_pairs_[static_cast<std::size_t>(part)];
       out.clear();
-      narrow_phase(x, share_begin(nc, part, parts), share_begin(nc, part + 1, parts), out);
+      for (int c; (c = next.fetch_add(1, std::memory_order_relaxed)) < chunks;)
+        narrow_phase(x, share_begin(nc, c, chunks), share_begin(nc, c + 1, chunks), out);
     });
     for (int part = 0; part < parts; ++part)
       pairs_.insert(pairs_.end(), part_pairs_[static_cast<std::size_t>(part)].begin(),
